@@ -1,0 +1,56 @@
+// tandem check-path: validate a path file against a problem.
+
+#include <iostream>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "tandem/io/path_file.hpp"
+#include "tandem/planning/path.hpp"
+
+namespace tandem::cli {
+namespace {
+
+struct CheckArgs {
+  ProblemArgs problem;
+  std::string path_file;
+};
+
+int run_check(const CheckArgs& args) {
+  const Problem problem = load_problem(args.problem);
+  const Path path = read_path_file(args.path_file, problem.space);
+  CollisionChecker checker(problem.scene);
+  MotionValidator validator(problem.space, checker);
+  const PathCheck check = check_path(path, validator);
+  if (!check.valid) {
+    std::cout << args.path_file << ": invalid at index " << check.index << ": " << check.describe()
+              << '\n';
+    return 1;
+  }
+  const bool starts =
+      problem.space.distance(path.front(), problem.start) < 1e-6 * problem.space.max_extent();
+  const bool ends =
+      problem.space.distance(path.back(), problem.goal) < 1e-6 * problem.space.max_extent();
+  std::cout << args.path_file << ": valid: " << path.size() << " states, " << validator.checks()
+            << " configurations checked, length " << path_length(problem.space, path) << "; "
+            << (starts ? "starts at the start" : "does not start at the start") << ", "
+            << (ends ? "ends at the goal" : "does not end at the goal") << '\n';
+  return 0;
+}
+
+}  // namespace
+
+Command add_check_path_command(CLI::App& app) {
+  auto args = std::make_shared<CheckArgs>();
+  add_problem_args(app, args->problem);
+  app.add_option("PATHFILE", args->path_file,
+                 "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
+      ->required();
+  app.footer(
+      "Checks every state (bounds, collision) and every motion between consecutive states at the "
+      "problem's "
+      "resolution.\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
+      "input.");
+  return [args] { return run_check(*args); };
+}
+
+}  // namespace tandem::cli

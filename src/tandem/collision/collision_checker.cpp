@@ -1,0 +1,264 @@
+#include "tandem/collision/collision_checker.hpp"
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "tandem/core/error.hpp"
+
+namespace tandem {
+namespace {
+
+using Geom = fcl::CollisionGeometryd;
+
+/// An axis-aligned box in some frame, as centre and half extents.
+struct Box3 {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d half = Eigen::Vector3d::Zero();
+
+  Box3 transformed(const Eigen::Isometry3d& X) const {
+    return {X * centre, X.linear().cwiseAbs() * half};
+  }
+  bool overlaps(const Box3& o) const {
+    return ((centre - o.centre).cwiseAbs().array() <= (half + o.half).array()).all();
+  }
+  /// Lower bound on the distance between anything inside the two boxes.
+  double distance_to(const Box3& o) const {
+    return ((centre - o.centre).cwiseAbs() - half - o.half).cwiseMax(0.0).norm();
+  }
+};
+
+void check_positive(double v, const std::string& body, const char* what) {
+  if (!(v > 0.0) || !std::isfinite(v)) {
+    throw InputError(
+        body, std::string(what) + " must be a positive finite number, got " + std::to_string(v));
+  }
+}
+
+std::shared_ptr<Geom> make_geometry(const Geometry& g, const std::string& body) {
+  struct Visitor {
+    const std::string& body;
+    std::shared_ptr<Geom> operator()(const Box& b) const {
+      for (int i = 0; i < 3; ++i)
+        check_positive(b.size[i], body, "box size");
+      return std::make_shared<fcl::Boxd>(b.size);
+    }
+    std::shared_ptr<Geom> operator()(const Sphere& s) const {
+      check_positive(s.radius, body, "sphere radius");
+      return std::make_shared<fcl::Sphered>(s.radius);
+    }
+    std::shared_ptr<Geom> operator()(const Cylinder& c) const {
+      check_positive(c.radius, body, "cylinder radius");
+      check_positive(c.length, body, "cylinder length");
+      return std::make_shared<fcl::Cylinderd>(c.radius, c.length);
+    }
+    std::shared_ptr<Geom> operator()(const MeshShape& m) const {
+      if (!m.mesh || m.mesh->triangles.empty())
+        throw InputError(m.source, "the mesh has no triangles");
+      auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+      std::vector<fcl::Triangle> tris;
+      tris.reserve(m.mesh->triangles.size());
+      const std::size_t n = m.mesh->vertices.size();
+      for (const auto& t : m.mesh->triangles) {
+        // Indices are validated by sanitize_mesh(); FCL's addSubModel does not check them.
+        if (t[0] >= n || t[1] >= n || t[2] >= n)
+          throw InputError(m.source, "triangle index out of range");
+        tris.emplace_back(t[0], t[1], t[2]);
+      }
+      model->beginModel(static_cast<int>(tris.size()), static_cast<int>(n));
+      model->addSubModel(m.mesh->vertices, tris);
+      model->endModel();
+      model->computeLocalAABB();
+      return model;
+    }
+  };
+  auto geom = std::visit(Visitor{body}, g);
+  geom->computeLocalAABB();
+  return geom;
+}
+
+bool is_mesh(const Geometry& g) {
+  return std::holds_alternative<MeshShape>(g);
+}
+bool is_sphere(const Geometry& g) {
+  return std::holds_alternative<Sphere>(g);
+}
+
+Box3 local_box(const Geom& g) {
+  const auto& aabb = g.aabb_local;
+  return {0.5 * (aabb.min_ + aabb.max_), 0.5 * (aabb.max_ - aabb.min_)};
+}
+
+struct FclPart {
+  std::shared_ptr<const Geom> geometry;
+  Eigen::Isometry3d pose;  ///< X_BP
+  bool pose_is_identity;
+  bool is_mesh;
+  bool is_sphere;
+  Box3 box;              ///< for the object: in the part frame; for obstacles: in the world frame
+  std::size_t obstacle;  ///< owning obstacle (obstacle parts only)
+};
+
+struct SharedGeometry {
+  std::vector<FclPart> object;
+  std::vector<FclPart> obstacles;
+  std::vector<std::string> obstacle_names;
+};
+
+}  // namespace
+
+struct CollisionChecker::Impl {
+  std::shared_ptr<const SharedGeometry> geometry;
+  CollisionCounters counters;
+  fcl::CollisionRequestd collision_request;
+  fcl::DistanceRequestd distance_request;
+
+  explicit Impl(std::shared_ptr<const SharedGeometry> g) : geometry(std::move(g)) {
+    collision_request.num_max_contacts = 1;
+    collision_request.enable_contact = false;
+    distance_request.enable_nearest_points = true;
+  }
+
+  Eigen::Isometry3d world_pose(const FclPart& part, const Eigen::Isometry3d& X_WO) const {
+    return part.pose_is_identity ? X_WO : X_WO * part.pose;
+  }
+};
+
+CollisionChecker::CollisionChecker(const Scene& scene) {
+  auto g = std::make_shared<SharedGeometry>();
+  for (const auto& part : scene.object.parts) {
+    auto geom = make_geometry(part.geometry, "object '" + scene.object.name + "'");
+    const bool identity = part.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
+    g->object.push_back({geom, part.pose, identity, is_mesh(part.geometry),
+                         is_sphere(part.geometry), local_box(*geom), 0});
+  }
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const Body& body = scene.obstacles[i];
+    g->obstacle_names.push_back(body.name);
+    for (const auto& part : body.parts) {
+      auto geom = make_geometry(part.geometry, "obstacle '" + body.name + "'");
+      const bool identity = part.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
+      g->obstacles.push_back({geom, part.pose, identity, is_mesh(part.geometry),
+                              is_sphere(part.geometry), local_box(*geom).transformed(part.pose),
+                              i});
+    }
+  }
+  if (g->object.empty())
+    throw InputError("object '" + scene.object.name + "'", "the moving object has no geometry");
+  impl_ = std::make_unique<Impl>(std::move(g));
+}
+
+CollisionChecker::CollisionChecker(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+CollisionChecker::~CollisionChecker() = default;
+CollisionChecker::CollisionChecker(CollisionChecker&&) noexcept = default;
+CollisionChecker& CollisionChecker::operator=(CollisionChecker&&) noexcept = default;
+
+CollisionChecker CollisionChecker::clone() const {
+  return CollisionChecker(std::make_unique<Impl>(impl_->geometry));
+}
+
+bool CollisionChecker::is_collision_free(const Config& q) {
+  Impl& m = *impl_;
+  ++m.counters.state_checks;
+  const Eigen::Isometry3d X_WO = q.pose();
+  for (const auto& part : m.geometry->object) {
+    const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
+    const Box3 box = part.box.transformed(X_WP);
+    for (const auto& obstacle : m.geometry->obstacles) {
+      if (!box.overlaps(obstacle.box))
+        continue;
+      fcl::CollisionResultd result;
+      try {
+        if (fcl::collide(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
+                         m.collision_request, result) > 0) {
+          return false;
+        }
+      } catch (const std::exception&) {
+        // GJK/EPA can throw on degenerate input (fcl #395, #415): be conservative.
+        ++m.counters.fcl_errors;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
+  Impl& m = *impl_;
+  ++m.counters.distance_queries;
+  NearestObstacle best;
+  best.distance = std::numeric_limits<double>::infinity();
+  const Eigen::Isometry3d X_WO = q.pose();
+  for (const auto& part : m.geometry->object) {
+    const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
+    const Box3 box = part.box.transformed(X_WP);
+    for (const auto& obstacle : m.geometry->obstacles) {
+      if (box.distance_to(obstacle.box) >= best.distance)
+        continue;
+      try {
+        fcl::CollisionResultd hit;
+        if (fcl::collide(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
+                         m.collision_request, hit) > 0) {
+          best =
+              NearestObstacle{true, 0.0, X_WP.translation(), X_WP.translation(), obstacle.obstacle};
+          return best;
+        }
+        // NOTE: FCL 0.7 returns nearest points in the objects' local frames, not the world frame,
+        // for a primitive passed before a mesh, and for a sphere against a mesh in either order
+        // (checked for every pair of geometry kinds in collision_checker_test). So the mesh goes
+        // first, and the points of a sphere-mesh pair are taken to the world frame here.
+        const bool obstacle_first = obstacle.is_mesh && !part.is_mesh;
+        fcl::DistanceResultd result;
+        if (obstacle_first) {
+          fcl::distance(obstacle.geometry.get(), obstacle.pose, part.geometry.get(), X_WP,
+                        m.distance_request, result);
+          std::swap(result.nearest_points[0], result.nearest_points[1]);
+        } else {
+          fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
+                        m.distance_request, result);
+        }
+        if ((obstacle.is_mesh && part.is_sphere) || (part.is_mesh && obstacle.is_sphere)) {
+          result.nearest_points[0] = X_WP * result.nearest_points[0];
+          result.nearest_points[1] = obstacle.pose * result.nearest_points[1];
+        }
+        if (result.min_distance < best.distance) {
+          best.in_collision = false;
+          best.distance = std::max(0.0, result.min_distance);
+          best.point_on_object = result.nearest_points[0];
+          best.point_on_obstacle = result.nearest_points[1];
+          best.obstacle = obstacle.obstacle;
+        }
+      } catch (const std::exception&) {
+        ++m.counters.fcl_errors;
+        return NearestObstacle{true, 0.0, X_WP.translation(), X_WP.translation(),
+                               obstacle.obstacle};
+      }
+    }
+  }
+  return best;
+}
+
+std::size_t CollisionChecker::obstacle_count() const {
+  return impl_->geometry->obstacle_names.size();
+}
+
+const std::string& CollisionChecker::obstacle_name(std::size_t index) const {
+  return impl_->geometry->obstacle_names.at(index);
+}
+
+const CollisionCounters& CollisionChecker::counters() const {
+  return impl_->counters;
+}
+void CollisionChecker::reset_counters() {
+  impl_->counters = {};
+}
+
+}  // namespace tandem

@@ -1,0 +1,69 @@
+#pragma once
+// Collision and distance queries of the moving object against the scene's obstacles (FCL behind
+// tandem's own interface: no FCL type appears here).
+//
+// Threading: one CollisionChecker per thread. clone() gives another thread its own checker; clones
+// share the immutable geometry (BVH models, primitives) and nothing else, so they can run
+// concurrently.
+//
+// Conventions: configurations are poses of the object frame in the world frame (X_WO); all points
+// are in the world frame; distances are in the scene's length unit and never negative. FCL's mesh
+// distance is not signed (fcl #221, #491): objects that overlap report in_collision = true and
+// distance 0, and their nearest points are unspecified.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "tandem/scene/scene.hpp"
+#include "tandem/space/config.hpp"
+
+namespace tandem {
+
+struct CollisionCounters {
+  std::uint64_t state_checks = 0;      ///< is_collision_free() calls
+  std::uint64_t distance_queries = 0;  ///< nearest_obstacle() calls
+  std::uint64_t fcl_errors =
+      0;  ///< exceptions thrown by FCL and caught here (counted as collision)
+};
+
+struct NearestObstacle {
+  bool in_collision = false;
+  double distance = 0.0;                                        ///< >= 0; 0 when in collision
+  Eigen::Vector3d point_on_object = Eigen::Vector3d::Zero();    ///< P_n, world frame
+  Eigen::Vector3d point_on_obstacle = Eigen::Vector3d::Zero();  ///< P_o, world frame
+  std::size_t obstacle = 0;                                     ///< index into Scene::obstacles
+};
+
+class CollisionChecker {
+ public:
+  /// Builds FCL models for every part (BVHModel<OBBRSS> for meshes, FCL primitives otherwise).
+  /// Throws InputError if a primitive has a non-positive or non-finite size.
+  explicit CollisionChecker(const Scene& scene);
+  ~CollisionChecker();
+  CollisionChecker(CollisionChecker&&) noexcept;
+  CollisionChecker& operator=(CollisionChecker&&) noexcept;
+
+  /// A checker for another thread: shares geometry, has its own counters.
+  CollisionChecker clone() const;
+
+  /// True when the object at q touches no obstacle. An FCL exception counts as a collision.
+  bool is_collision_free(const Config& q);
+
+  /// The obstacle nearest to the object at q, with the nearest points.
+  NearestObstacle nearest_obstacle(const Config& q);
+
+  std::size_t obstacle_count() const;
+  const std::string& obstacle_name(std::size_t index) const;
+
+  const CollisionCounters& counters() const;
+  void reset_counters();
+
+ private:
+  struct Impl;
+  explicit CollisionChecker(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tandem

@@ -1,0 +1,79 @@
+#include "tandem/io/text.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <fstream>
+
+#include "tandem/core/error.hpp"
+
+namespace tandem {
+
+std::string trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b])))
+    ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1])))
+    --e;
+  return std::string(s.substr(b, e - b));
+}
+
+std::optional<double> parse_double(std::string_view s) {
+  const std::string t = trim(s);
+  if (t.empty())
+    return std::nullopt;
+  double v = 0.0;
+  const char* first = t.data();
+  if (*first == '+')
+    ++first;  // from_chars rejects a leading '+', which people write
+  auto [ptr, ec] = std::from_chars(first, t.data() + t.size(), v);
+  if (ec != std::errc() || ptr != t.data() + t.size())
+    return std::nullopt;
+  return v;
+}
+
+std::optional<std::uint64_t> parse_uint(std::string_view s) {
+  const std::string t = trim(s);
+  if (t.empty())
+    return std::nullopt;
+  std::uint64_t v = 0;
+  auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || ptr != t.data() + t.size())
+    return std::nullopt;
+  return v;
+}
+
+void write_file_atomically(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
+    if (!out)
+      throw InputError(file.string(), "cannot be written");
+    out << text;
+    out.flush();
+    if (!out)
+      throw InputError(file.string(), "write error");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(file.string(), "cannot be written");
+  }
+}
+
+std::vector<std::string_view> split_whitespace(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i])))
+      ++i;
+    const std::size_t b = i;
+    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i])))
+      ++i;
+    if (i > b)
+      out.push_back(s.substr(b, i - b));
+  }
+  return out;
+}
+
+}  // namespace tandem

@@ -1,0 +1,212 @@
+#include "tandem/nn/kd_tree_nn.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+
+#include "tandem/nn/linear_nn.hpp"
+
+namespace tandem {
+
+KdTreeNearestNeighbors::KdTreeNearestNeighbors(const SE3Space& space,
+                                               const std::vector<Config>& points)
+    : NearestNeighbors(space, points) {
+  clear();
+}
+
+void KdTreeNearestNeighbors::clear() {
+  nodes_.assign(1, Node{});
+  free_.clear();
+  size_ = 0;
+}
+
+std::uint32_t KdTreeNearestNeighbors::new_node() {
+  if (!free_.empty()) {
+    const std::uint32_t n = free_.back();
+    free_.pop_back();
+    nodes_[n] = Node{};
+    return n;
+  }
+  nodes_.emplace_back();
+  return static_cast<std::uint32_t>(nodes_.size() - 1);
+}
+
+void KdTreeNearestNeighbors::add(NodeId id) {
+  const Eigen::Vector3d& t = points_[id].t;
+  std::vector<std::uint32_t>& path = path_;
+  path.clear();
+  std::uint32_t n = 0;
+  for (;;) {
+    path.push_back(n);
+    ++nodes_[n].count;
+    if (nodes_[n].axis < 0)
+      break;
+    n = t[nodes_[n].axis] < nodes_[n].split ? nodes_[n].left : nodes_[n].right;
+  }
+  nodes_[n].bucket.push_back(id);
+  ++size_;
+  if (nodes_[n].bucket.size() > kBucketSize)
+    split_leaf(n);
+
+  // Depth allowed for a kAlpha-balanced tree of this size, plus slack for the bucket level.
+  const double leaves = static_cast<double>(size_) / static_cast<double>(kBucketSize) + 1.0;
+  const auto allowed = static_cast<std::size_t>(std::log(leaves) / std::log(1.0 / kAlpha)) + 2;
+  if (path.size() <= allowed)
+    return;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Node& a = nodes_[path[i]];
+    const std::uint32_t heavier = std::max(nodes_[a.left].count, nodes_[a.right].count);
+    if (static_cast<double>(heavier) > kAlpha * static_cast<double>(a.count)) {
+      rebuild(path[i]);
+      return;
+    }
+  }
+}
+
+void KdTreeNearestNeighbors::collect(std::uint32_t node, std::vector<NodeId>& ids) {
+  Node& n = nodes_[node];
+  if (n.axis < 0) {
+    ids.insert(ids.end(), n.bucket.begin(), n.bucket.end());
+    return;
+  }
+  collect(n.left, ids);
+  collect(n.right, ids);
+  free_.push_back(n.left);
+  free_.push_back(n.right);
+}
+
+void KdTreeNearestNeighbors::rebuild(std::uint32_t root) {
+  std::vector<NodeId> ids;
+  ids.reserve(nodes_[root].count);
+  collect(root, ids);
+  nodes_[root] = Node{};
+  build(root, ids.begin(), ids.end());
+}
+
+void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iterator first,
+                                   std::vector<NodeId>::iterator last) {
+  const auto count = static_cast<std::size_t>(last - first);
+  nodes_[node].count = static_cast<std::uint32_t>(count);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (auto it = first; it != last; ++it) {
+    lo = lo.cwiseMin(points_[*it].t);
+    hi = hi.cwiseMax(points_[*it].t);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  if (count <= kBucketSize || !(hi[axis] > lo[axis])) {
+    nodes_[node].axis = -1;
+    nodes_[node].bucket.assign(first, last);
+    return;
+  }
+  auto mid = first + static_cast<std::ptrdiff_t>(count / 2);
+  std::nth_element(first, mid, last,
+                   [&](NodeId a, NodeId b) { return points_[a].t[axis] < points_[b].t[axis]; });
+  double split = points_[*mid].t[axis];
+  if (split <= lo[axis])
+    split = std::nextafter(lo[axis], hi[axis]);
+  // Points at the split value go right.
+  mid = std::partition(first, last, [&](NodeId a) { return points_[a].t[axis] < split; });
+  const std::uint32_t l = new_node();
+  const std::uint32_t r = new_node();
+  nodes_[node].axis = axis;
+  nodes_[node].split = split;
+  nodes_[node].left = l;
+  nodes_[node].right = r;
+  build(l, first, mid);
+  build(r, mid, last);
+}
+
+void KdTreeNearestNeighbors::split_leaf(std::uint32_t leaf) {
+  std::vector<NodeId> ids = std::move(nodes_[leaf].bucket);
+  nodes_[leaf] = Node{};
+  build(leaf, ids.begin(), ids.end());
+}
+
+// Depth-first search, nearer child first. `offset` holds, per axis, the distance from q to the
+// current cell along that axis, and offset2 its squared norm (Arya & Mount's incremental distance).
+template <class Visit>
+void KdTreeNearestNeighbors::search(std::uint32_t n, const Config& q, std::array<double, 3>& offset,
+                                    double offset2, Visit& visit) const {
+  const Node& node = nodes_[n];
+  if (node.axis < 0) {
+    for (NodeId id : node.bucket)
+      visit.consider(id, space_.distance(q, points_[id]));
+    return;
+  }
+  const int axis = node.axis;
+  const double diff = q.t[axis] - node.split;
+  const std::uint32_t near_child = diff < 0.0 ? node.left : node.right;
+  const std::uint32_t far_child = diff < 0.0 ? node.right : node.left;
+  search(near_child, q, offset, offset2, visit);
+  const double old = offset[static_cast<std::size_t>(axis)];
+  const double far2 = offset2 - old * old + diff * diff;
+  if (space_.weights().translation * std::sqrt(far2) < visit.bound()) {
+    offset[static_cast<std::size_t>(axis)] = std::abs(diff);
+    search(far_child, q, offset, far2, visit);
+    offset[static_cast<std::size_t>(axis)] = old;
+  }
+}
+
+NodeId KdTreeNearestNeighbors::nearest(const Config& q) const {
+  if (size_ == 0)
+    throw std::logic_error("nearest() on an empty index");
+  struct Best {
+    double d = std::numeric_limits<double>::infinity();
+    NodeId id = 0;
+    double bound() const { return d; }
+    void consider(NodeId i, double di) {
+      if (di < d) {
+        d = di;
+        id = i;
+      }
+    }
+  } best;
+  std::array<double, 3> offset{0.0, 0.0, 0.0};
+  search(0, q, offset, 0.0, best);
+  return best.id;
+}
+
+void KdTreeNearestNeighbors::k_nearest(const Config& q, std::size_t k,
+                                       std::vector<NodeId>& out) const {
+  out.clear();
+  if (k == 0 || size_ == 0)
+    return;
+  struct KBest {
+    std::size_t k;
+    std::priority_queue<std::pair<double, NodeId>> heap;  // max-heap: the worst of the k on top
+    double bound() const {
+      return heap.size() < k ? std::numeric_limits<double>::infinity() : heap.top().first;
+    }
+    void consider(NodeId i, double di) {
+      if (heap.size() < k) {
+        heap.emplace(di, i);
+      } else if (di < heap.top().first) {
+        heap.pop();
+        heap.emplace(di, i);
+      }
+    }
+  } best{k, {}};
+  std::array<double, 3> offset{0.0, 0.0, 0.0};
+  search(0, q, offset, 0.0, best);
+  out.resize(best.heap.size());
+  for (std::size_t i = out.size(); i-- > 0;) {
+    out[i] = best.heap.top().second;
+    best.heap.pop();
+  }
+}
+
+std::unique_ptr<NearestNeighbors> make_nearest_neighbors(std::string_view kind,
+                                                         const SE3Space& space,
+                                                         const std::vector<Config>& points) {
+  if (kind == "linear")
+    return std::make_unique<LinearNearestNeighbors>(space, points);
+  if (kind == "kdtree" || kind.empty())
+    return std::make_unique<KdTreeNearestNeighbors>(space, points);
+  throw std::invalid_argument("unknown nearest-neighbour index '" + std::string(kind) + "'");
+}
+
+}  // namespace tandem

@@ -1,0 +1,128 @@
+#pragma once
+// The planner interface: steppable, interruptible, deterministic for a given seed.
+//
+// A planner is driven either by solve() (until solved, a time or iteration limit, or interrupt()),
+// or one iteration at a time by step() — the interactive loop and the viewer drive it that way (the
+// startSolve / oneStep / interrupt pattern of hpp-core). Outcomes are values (PlannerStatus), not
+// exceptions.
+//
+// Threading: step() and solve() run on one thread (the planner thread). interrupt() may be called
+// from any thread. stats(), trees() and solution() may be read on the planner thread, or by others
+// only while the planner is not stepping.
+
+#include <atomic>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tandem/collision/motion_validator.hpp"
+#include "tandem/core/rng.hpp"
+#include "tandem/planning/tree.hpp"
+
+namespace tandem {
+
+enum class PlannerStatus : std::uint8_t {
+  running,          ///< not solved yet; step() may be called again
+  solved,           ///< solution() holds a valid path from start to goal
+  timeout,          ///< solve() reached its time limit
+  iteration_limit,  ///< solve() reached its iteration limit
+  interrupted,      ///< interrupt() was called
+  invalid_start,    ///< the start is outside the bounds or in collision
+  invalid_goal,     ///< the goal is outside the bounds or in collision
+};
+
+std::string_view to_string(PlannerStatus status);
+
+/// How a tree grows toward a target it cannot reach in one collision-free motion.
+enum class ExtendMode : std::uint8_t {
+  classic,     ///< Kuffner & LaValle 2000: the whole step is valid or nothing is added (OMPL's
+               ///< RRTConnect)
+  last_valid,  ///< the papers' Add_Tree: the last valid configuration along the motion is added
+};
+
+/// Settings of the automatic planners, with their defaults. Declared once; the CLI, the benchmark
+/// and (later) the viewer read them from here.
+struct PlannerSettings {
+  double range =
+      0.0;  ///< longest motion added in one extension; <= 0 means 0.2 x max extent (OMPL)
+  double goal_bias = 0.05;  ///< RRT only: probability of extending toward the goal, in [0, 1]
+  std::uint64_t seed = 1;   ///< the run's only source of randomness
+  ExtendMode extend = ExtendMode::classic;
+  std::string nearest_neighbors = "kdtree";  ///< "kdtree" or "linear"
+};
+
+struct PlannerStats {
+  double time_s = 0.0;                 ///< wall time spent in solve()
+  std::uint64_t iterations = 0;        ///< step() calls that sampled
+  std::size_t nodes = 0;               ///< in all trees, roots included
+  std::size_t edges = 0;               ///< nodes minus roots
+  std::uint64_t collision_checks = 0;  ///< configuration checks by this planner's validator
+};
+
+struct Termination {
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  std::uint64_t max_iterations = std::numeric_limits<std::uint64_t>::max();
+};
+
+class Planner {
+ public:
+  Planner(MotionValidator& validator, const Config& start, const Config& goal,
+          const PlannerSettings& settings);
+  virtual ~Planner() = default;
+  Planner(const Planner&) = delete;
+  Planner& operator=(const Planner&) = delete;
+
+  virtual std::string_view name() const = 0;
+
+  /// One iteration. The first call checks the start and the goal. Returns running until solved;
+  /// after a terminal status, returns it again without doing anything.
+  PlannerStatus step();
+
+  /// Steps until solved, interrupted, or a limit is reached.
+  PlannerStatus solve(const Termination& termination);
+
+  /// Asks solve() to return at its next iteration. Thread-safe.
+  void interrupt() { interrupt_requested_.store(true, std::memory_order_relaxed); }
+
+  PlannerStatus status() const { return status_; }
+  const PlannerStats& stats() const { return stats_; }
+  const std::vector<Config>& solution() const { return solution_; }
+  const PlannerSettings& settings() const { return settings_; }
+  double range() const { return range_; }
+  /// The trees, for display and statistics; the first is rooted at the start.
+  virtual std::vector<const Tree*> trees() const = 0;
+
+ protected:
+  /// One iteration of the algorithm; returns true when solution_ has been set.
+  virtual bool iterate() = 0;
+
+  void update_counts();
+
+  MotionValidator& validator_;
+  const SE3Space& space_;
+  Config start_, goal_;
+  PlannerSettings settings_;
+  double range_;
+  Rng rng_;
+  std::vector<Config> solution_;
+
+ private:
+  PlannerStatus status_ = PlannerStatus::running;
+  bool started_ = false;
+  std::uint64_t checks_at_start_ = 0;
+  PlannerStats stats_;
+  std::atomic<bool> interrupt_requested_{false};
+};
+
+/// "birrt" (RRT-Connect) or "rrt". Throws std::invalid_argument for an unknown name.
+std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
+                                      const Config& start, const Config& goal,
+                                      const PlannerSettings& settings);
+
+/// Names make_planner() accepts.
+const std::vector<std::string>& planner_names();
+
+}  // namespace tandem

@@ -1,0 +1,47 @@
+#pragma once
+// A search tree: flat arrays of configurations and parent indices, with a nearest-neighbour index.
+//
+// Not movable: the index refers to `nodes` in place.
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "tandem/nn/nearest_neighbors.hpp"
+
+namespace tandem {
+
+struct Tree {
+  static constexpr NodeId kNoParent = UINT32_MAX;
+
+  Tree(const SE3Space& space, std::string_view nn_kind, const Config& root)
+      : nn(make_nearest_neighbors(nn_kind, space, nodes)) {
+    add(root, kNoParent);
+  }
+  Tree(const Tree&) = delete;
+  Tree& operator=(const Tree&) = delete;
+
+  NodeId add(const Config& q, NodeId parent_id) {
+    const auto id = static_cast<NodeId>(nodes.size());
+    nodes.push_back(q);
+    parent.push_back(parent_id);
+    nn->add(id);
+    return id;
+  }
+  std::size_t size() const { return nodes.size(); }
+
+  /// Configurations from the root to `id`, root first.
+  std::vector<Config> path_from_root(NodeId id) const {
+    std::vector<Config> path;
+    for (NodeId n = id; n != kNoParent; n = parent[n])
+      path.push_back(nodes[n]);
+    return {path.rbegin(), path.rend()};
+  }
+
+  std::vector<Config> nodes;
+  std::vector<NodeId> parent;  ///< kNoParent for the root
+  std::unique_ptr<NearestNeighbors> nn;
+};
+
+}  // namespace tandem

@@ -1,0 +1,258 @@
+#include "tandem/scene/ompl_app_problem.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "tandem/core/error.hpp"
+#include "tandem/io/text.hpp"
+#include "tandem/scene/mesh_loader.hpp"
+
+namespace tandem {
+namespace {
+
+struct IniValue {
+  std::string text;
+  int line;
+};
+
+/// section -> key -> value; the INI dialect of boost::program_options config files.
+using Ini = std::map<std::string, std::map<std::string, IniValue>>;
+
+Ini read_ini(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(
+        name, std::filesystem::exists(file) ? "cannot be opened for reading" : "no such file");
+  Ini ini;
+  std::string section;
+  std::string raw;
+  int line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    const std::string s = trim(raw);
+    if (s.empty() || s[0] == '#' || s[0] == ';')
+      continue;
+    if (s.front() == '[') {
+      if (s.back() != ']' || s.size() < 3)
+        throw InputError(name + ":" + std::to_string(line), "malformed section header '" + s + "'");
+      section = trim(s.substr(1, s.size() - 2));
+      continue;
+    }
+    const auto eq = s.find('=');
+    if (eq == std::string::npos) {
+      throw InputError(name + ":" + std::to_string(line),
+                       "expected 'key = value', got '" + s + "'");
+    }
+    if (section.empty())
+      throw InputError(name + ":" + std::to_string(line), "key outside of any [section]");
+    const std::string key = trim(s.substr(0, eq));
+    if (key.empty())
+      throw InputError(name + ":" + std::to_string(line), "empty key");
+    auto& slot = ini[section];
+    if (slot.count(key) != 0) {
+      throw InputError(
+          name + ":" + std::to_string(line),
+          "key '" + key + "' repeated (first on line " + std::to_string(slot[key].line) + ")");
+    }
+    slot[key] = IniValue{trim(s.substr(eq + 1)), line};
+  }
+  if (in.bad())
+    throw InputError(name, "read error");
+  return ini;
+}
+
+class ProblemSection {
+ public:
+  ProblemSection(const std::string& file, const std::map<std::string, IniValue>& values)
+      : file_(file), values_(values) {}
+
+  bool has(const std::string& key) const { return values_.count(key) != 0; }
+
+  std::string text(const std::string& key) const {
+    auto it = values_.find(key);
+    if (it == values_.end())
+      throw InputError(file_, "[problem] has no '" + key + "'");
+    return it->second.text;
+  }
+
+  double number(const std::string& key) const {
+    auto it = values_.find(key);
+    if (it == values_.end())
+      throw InputError(file_, "[problem] has no '" + key + "'");
+    auto v = parse_double(it->second.text);
+    if (!v || !std::isfinite(*v)) {
+      throw InputError(file_ + ":" + std::to_string(it->second.line),
+                       "'" + key + "' is not a finite number: '" + it->second.text + "'");
+    }
+    return *v;
+  }
+
+  double number_or(const std::string& key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+  }
+
+ private:
+  std::string file_;
+  const std::map<std::string, IniValue>& values_;
+};
+
+Eigen::Quaterniond axis_angle(const ProblemSection& p, const std::string& prefix,
+                              const std::string& file) {
+  const double theta = p.number(prefix + ".theta");
+  Eigen::Vector3d axis(p.number_or(prefix + ".axis.x", 1.0), p.number_or(prefix + ".axis.y", 0.0),
+                       p.number_or(prefix + ".axis.z", 0.0));
+  if (axis.norm() == 0.0) {
+    if (theta != 0.0)
+      throw InputError(file, prefix + ".axis is the zero vector");
+    axis = Eigen::Vector3d::UnitX();
+  }
+  return Eigen::Quaterniond(Eigen::AngleAxisd(theta, axis.normalized()));
+}
+
+std::filesystem::path mesh_path(const std::filesystem::path& cfg, const std::string& file_name) {
+  std::filesystem::path p(file_name);
+  return p.is_absolute() ? p : cfg.parent_path() / p;
+}
+
+}  // namespace
+
+Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
+  const std::string name = cfg_file.string();
+  const Ini ini = read_ini(cfg_file);
+  auto section = ini.find("problem");
+  if (section == ini.end())
+    throw InputError(name, "no [problem] section");
+
+  static const std::set<std::string> kKnown = {
+      "name", "robot", "world", "start.x", "start.y", "start.z", "start.theta", "start.axis.x",
+      "start.axis.y", "start.axis.z", "goal.x", "goal.y", "goal.z", "goal.theta", "goal.axis.x",
+      "goal.axis.y", "goal.axis.z", "volume.min.x", "volume.min.y", "volume.min.z", "volume.max.x",
+      "volume.max.y", "volume.max.z",
+      // Read by OMPL.app for other planners or objectives; they do not change the problem's
+      // geometry.
+      "sampler", "objective", "objective.threshold", "control"};
+  for (const auto& [key, value] : section->second) {
+    if (kKnown.count(key) == 0) {
+      throw InputError(name + ":" + std::to_string(value.line),
+                       "unknown key '" + key + "' in [problem]");
+    }
+  }
+  const ProblemSection p(name, section->second);
+  const bool planar = !p.has("start.z");
+
+  LoadedMesh robot = load_mesh(mesh_path(cfg_file, p.text("robot")));
+  LoadedMesh world = load_mesh(mesh_path(cfg_file, p.text("world")));
+
+  // OMPL.app shifts every robot vertex by the mean of the robot's vertices (z kept for planar
+  // problems), in single precision: v - c computed on floats, then widened.
+  Eigen::Vector3d centre = robot.vertex_mean;
+  if (planar)
+    centre.z() = 0.0;
+  for (auto& v : robot.mesh.vertices) {
+    for (int i = 0; i < 3; ++i) {
+      v[i] = static_cast<double>(static_cast<float>(v[i]) - static_cast<float>(centre[i]));
+    }
+  }
+
+  Bounds bounds;
+  const char* axes[] = {"x", "y", "z"};
+  const int dims = planar ? 2 : 3;
+  const bool has_volume = p.has("volume.min.x");
+  if (has_volume) {
+    for (int i = 0; i < dims; ++i) {
+      bounds.min[i] = p.number(std::string("volume.min.") + axes[i]);
+      bounds.max[i] = p.number(std::string("volume.max.") + axes[i]);
+    }
+  } else {
+    auto [lo, hi] = world.mesh.bounding_box();
+    bounds.min = lo;
+    bounds.max = hi;
+  }
+  if (planar)
+    bounds.min.z() = bounds.max.z() = 0.0;
+
+  Config start, goal;
+  if (planar) {
+    const auto yaw_q = [](double th) {
+      return Eigen::Quaterniond(Eigen::AngleAxisd(th, Eigen::Vector3d::UnitZ()));
+    };
+    start.t = {p.number("start.x"), p.number("start.y"), 0.0};
+    start.q = yaw_q(p.number("start.theta"));
+    goal.t = {p.number("goal.x"), p.number("goal.y"), 0.0};
+    goal.q = yaw_q(p.number("goal.theta"));
+  } else {
+    start.t = {p.number("start.x"), p.number("start.y"), p.number("start.z")};
+    start.q = axis_angle(p, "start", name);
+    goal.t = {p.number("goal.x"), p.number("goal.y"), p.number("goal.z")};
+    goal.q = axis_angle(p, "goal", name);
+  }
+  bounds.include(start.t);
+  bounds.include(goal.t);
+  if (!(bounds.min.head(dims).array() < bounds.max.head(dims).array()).all()) {
+    throw InputError(name, "the volume is empty (volume.min must be below volume.max)");
+  }
+
+  Scene scene;
+  scene.object.name = "robot";
+  scene.object.parts.push_back(
+      {MeshShape{std::make_shared<const TriangleMesh>(std::move(robot.mesh)),
+                 mesh_path(cfg_file, p.text("robot")).string()},
+       Eigen::Isometry3d::Identity()});
+  scene.object.color = {0.85, 0.45, 0.2, 1.0};
+  Body env;
+  env.name = "world";
+  env.parts.push_back({MeshShape{std::make_shared<const TriangleMesh>(std::move(world.mesh)),
+                                 mesh_path(cfg_file, p.text("world")).string()},
+                       Eigen::Isometry3d::Identity()});
+  env.color = {0.6, 0.65, 0.7, 1.0};
+  scene.obstacles.push_back(std::move(env));
+
+  Problem problem{p.has("name") ? p.text("name") : cfg_file.stem().string(),
+                  name,
+                  std::move(scene),
+                  SE3Space(planar ? SpaceKind::planar : SpaceKind::se3, bounds),
+                  start,
+                  goal,
+                  {}};
+
+  if (auto b = ini.find("benchmark"); b != ini.end()) {
+    for (const auto& [key, value] : b->second) {
+      if (key == "time_limit") {
+        auto v = parse_double(value.text);
+        if (!v || !(*v > 0.0))
+          throw InputError(name + ":" + std::to_string(value.line),
+                           "time_limit must be a positive number");
+        problem.hints.time_limit = *v;
+      } else if (key == "run_count") {
+        auto v = parse_uint(value.text);
+        if (!v || *v == 0)
+          throw InputError(name + ":" + std::to_string(value.line),
+                           "run_count must be a positive integer");
+        problem.hints.run_count = static_cast<std::uint32_t>(*v);
+      }
+    }
+  }
+  if (auto pl = ini.find("planner"); pl != ini.end()) {
+    static const std::map<std::string, std::string> kPlannerNames = {{"rrt", "rrt"},
+                                                                     {"rrtconnect", "birrt"}};
+    for (const auto& [key, value] : pl->second) {
+      const auto dot = key.find('.');
+      if (dot == std::string::npos || key.substr(dot + 1) != "range")
+        continue;
+      auto it = kPlannerNames.find(key.substr(0, dot));
+      if (it == kPlannerNames.end())
+        continue;
+      auto v = parse_double(value.text);
+      if (!v || !(*v > 0.0))
+        throw InputError(name + ":" + std::to_string(value.line),
+                         key + " must be a positive number");
+      problem.hints.range[it->second] = *v;
+    }
+  }
+  return problem;
+}
+
+}  // namespace tandem

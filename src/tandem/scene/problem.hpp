@@ -1,0 +1,35 @@
+#pragma once
+// A motion planning problem: scene, configuration space, start, goal, and what the problem file
+// says about planning (the command line may override each of these).
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "tandem/scene/scene.hpp"
+#include "tandem/space/se3_space.hpp"
+
+namespace tandem {
+
+/// Planning settings a problem file may carry. Empty optionals mean "use tandem's default".
+struct ProblemPlannerHints {
+  std::optional<std::string> planner;   ///< "birrt" or "rrt"
+  std::map<std::string, double> range;  ///< per planner name ("rrt", "birrt")
+  std::optional<double> goal_bias;      ///< RRT's probability of sampling the goal
+  std::optional<double> time_limit;     ///< seconds
+  std::optional<std::uint64_t> seed;
+  std::optional<std::uint32_t> run_count;  ///< benchmark runs ([benchmark] run_count in OMPL.app)
+};
+
+struct Problem {
+  std::string name;
+  std::string source;  ///< the file or built-in name it was loaded from
+  Scene scene;
+  SE3Space space;
+  Config start;
+  Config goal;
+  ProblemPlannerHints hints;
+};
+
+}  // namespace tandem

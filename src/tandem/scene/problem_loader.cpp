@@ -1,0 +1,44 @@
+#include "tandem/scene/problem_loader.hpp"
+
+#include <algorithm>
+
+#include "tandem/core/error.hpp"
+#include "tandem/scene/builtin_scenes.hpp"
+#include "tandem/scene/ompl_app_problem.hpp"
+#include "tandem/scene/scenario_file.hpp"
+
+namespace tandem {
+
+Problem load_problem(const std::string& spec, const ProblemLoadOptions& options) {
+  std::error_code ec;
+  const std::filesystem::path path(spec);
+  if (std::filesystem::exists(path, ec)) {
+    if (std::filesystem::is_directory(path, ec))
+      throw InputError(spec, "is a folder, not a problem file");
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".cfg")
+      return load_ompl_app_problem(path);
+    if (ext == ".toml") {
+      FileAccess access;
+      access.roots.push_back(std::filesystem::absolute(path).parent_path());
+      for (const auto& d : options.allowed_dirs)
+        access.roots.push_back(std::filesystem::absolute(d));
+      return load_scenario_file(path, access);
+    }
+    throw InputError(spec, "unknown problem format '" + ext +
+                               "' (expected an OMPL.app .cfg or a tandem .toml scenario)");
+  }
+  for (const auto& scene : builtin_scenes()) {
+    if (scene.name == spec)
+      return parse_scenario(scene.text, "built-in scene '" + spec + "'", {}, {});
+  }
+  std::string names;
+  for (const auto& scene : builtin_scenes())
+    names += (names.empty() ? "" : ", ") + std::string(scene.name);
+  throw InputError(
+      spec, "no such file, and no built-in scene of that name (built-in scenes: " + names + ")");
+}
+
+}  // namespace tandem

@@ -1,0 +1,241 @@
+// The tandem program as a user runs it: exit codes, messages, files.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace tandem {
+namespace {
+
+using test::run_tandem;
+using test::TempDir;
+using ::testing::HasSubstr;
+
+const char* kWallScenario = R"(name = "wall"
+[space]
+min = [-3, -3, -1]
+max = [3, 3, 1]
+[object]
+box = [1, 0.2, 0.2]
+[[obstacle]]
+name = "wall-south"
+box = [0.1, 3.0, 2]
+position = [0, -1.8, 0]
+[[obstacle]]
+name = "wall-north"
+box = [0.1, 3.0, 2]
+position = [0, 1.8, 0]
+[start]
+position = [-2, 0, 0]
+[goal]
+position = [2, 0, 0]
+)";
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at == std::string::npos)
+    throw std::logic_error("fixture lacks '" + from + "'");
+  return text.replace(at, from.size(), to);
+}
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Bad input: exit code 2, nothing on stdout, exactly one line on stderr containing every
+/// `expected`.
+void expect_bad_input(const std::vector<std::string>& args,
+                      const std::vector<std::string>& expected) {
+  const test::RunResult r = run_tandem(args);
+  std::string joined;
+  for (const auto& a : args)
+    joined += a + " ";
+  EXPECT_EQ(r.exit_code, 2) << joined << "\n" << r.err;
+  EXPECT_EQ(r.out, "") << joined;
+  ASSERT_FALSE(r.err.empty()) << joined;
+  EXPECT_EQ(r.err.back(), '\n') << joined;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << joined << "\n" << r.err;
+  EXPECT_THAT(r.err, HasSubstr("tandem: error: ")) << joined;
+  for (const auto& e : expected)
+    EXPECT_THAT(r.err, HasSubstr(e)) << joined;
+}
+
+TEST(Cli, MissingProblemFile) {
+  expect_bad_input({"plan", "/nonexistent/p.toml"}, {"/nonexistent/p.toml", "no such file"});
+}
+
+TEST(Cli, MalformedProblemFiles) {
+  TempDir dir;
+  expect_bad_input({"plan", dir.write("p.cfg", "[problem]\nrobot\n").string()},
+                   {"p.cfg:2", "expected 'key = value'"});
+  expect_bad_input({"plan", dir.write("p.toml", "[space\n").string()},
+                   {"p.toml:1", "invalid TOML"});
+  expect_bad_input({"plan", dir.write("p.txt", "hello").string()},
+                   {"p.txt", "unknown problem format"});
+  expect_bad_input({"plan", dir.path().string()}, {"is a folder"});
+}
+
+TEST(Cli, MalformedUrdfAndMeshes) {
+  TempDir dir;
+  dir.write("bad.urdf", "<robot name='x'><link name='a'>");
+  dir.write("bad.stl", "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0\n");
+  dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  dir.write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  const std::string box = "box = [0.1, 3.0, 2]\nposition = [0, -1.8, 0]";
+  expect_bad_input(
+      {"plan", dir.write("u.toml", with(kWallScenario, box, "urdf = \"bad.urdf\"")).string()},
+      {"bad.urdf", "not a valid URDF"});
+  expect_bad_input(
+      {"plan", dir.write("m.toml", with(kWallScenario, box, "mesh = \"bad.stl\"")).string()},
+      {"bad.stl", "cannot read mesh"});
+  expect_bad_input(
+      {"plan", dir.write("e.toml", with(kWallScenario, box, "mesh = \"points.obj\"")).string()},
+      {"points.obj"});
+  expect_bad_input(
+      {"plan", dir.write("d.toml", with(kWallScenario, box, "mesh = \"line.obj\"")).string()},
+      {"line.obj", "no triangles"});
+}
+
+TEST(Cli, ImpossibleProblems) {
+  TempDir dir;
+  expect_bad_input({"plan", dir.write("s.toml", with(kWallScenario, "position = [-2, 0, 0]",
+                                                     "position = [0, 1, 0]"))
+                                .string()},
+                   {"s.toml", "the start is in collision with obstacle 'wall-north'"});
+  expect_bad_input({"plan", dir.write("g.toml", with(kWallScenario, "position = [2, 0, 0]",
+                                                     "position = [0, -1, 0]"))
+                                .string()},
+                   {"g.toml", "the goal is in collision with obstacle 'wall-south'"});
+  expect_bad_input({"plan", dir.write("b.toml", with(kWallScenario, "position = [2, 0, 0]",
+                                                     "position = [5, 0, 0]"))
+                                .string()},
+                   {"b.toml", "the goal", "outside the workspace bounds"});
+}
+
+TEST(Cli, MalformedPathFile) {
+  TempDir dir;
+  const auto problem = dir.write("w.toml", kWallScenario);
+  expect_bad_input({"check-path", problem.string(), dir.write("p.path", "1 2 3\n").string()},
+                   {"p.path:1", "expected 7 numbers"});
+  expect_bad_input({"check-path", problem.string(), (dir.path() / "none.path").string()},
+                   {"none.path", "no such file"});
+}
+
+TEST(Cli, UnknownOptionsAndNonsensicalValues) {
+  expect_bad_input({"plan", "cluttered-1", "--frobnicate"}, {"--frobnicate"});
+  expect_bad_input({"plan", "cluttered-1", "--time-limit", "-1"}, {"--time-limit"});
+  expect_bad_input({"plan", "cluttered-1", "--time-limit", "soon"}, {"--time-limit"});
+  expect_bad_input({"plan", "cluttered-1", "--range", "0"}, {"--range"});
+  expect_bad_input({"plan", "cluttered-1", "--seed", "-3"}, {"--seed"});
+  expect_bad_input({"plan", "cluttered-1", "--planner", "prm"}, {"--planner"});
+  expect_bad_input({"plan", "cluttered-1", "--goal-bias", "2"}, {"--goal-bias"});
+  expect_bad_input({"plan"}, {"PROBLEM"});
+  expect_bad_input({}, {"subcommand"});
+  expect_bad_input({"fly"}, {"fly"});
+}
+
+TEST(Cli, PlansWritesJsonAndAPathThatChecks) {
+  TempDir dir;
+  const auto problem = dir.write("w.toml", kWallScenario).string();
+  const auto out = (dir.path() / "w.path").string();
+  const test::RunResult r = run_tandem({"plan", problem, "--seed", "3", "--json", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"solved", "time_s", "iterations", "nodes", "edges", "collision_checks",
+                          "path_length", "seed"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_EQ(j["seed"].get<int>(), 3);
+  EXPECT_EQ(j["edges"].get<int>(), j["nodes"].get<int>() - 2);
+  EXPECT_GT(j["path_length"].get<double>(), 3.99);
+  const test::RunResult check = run_tandem({"check-path", problem, out});
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  EXPECT_THAT(check.out, HasSubstr("valid"));
+  EXPECT_THAT(check.out, HasSubstr("starts at the start, ends at the goal"));
+}
+
+TEST(Cli, SameSeedSamePath) {
+  TempDir dir;
+  const auto problem = dir.write("w.toml", kWallScenario).string();
+  const auto a = (dir.path() / "a.path").string(), b = (dir.path() / "b.path").string();
+  const auto c = (dir.path() / "c.path").string();
+  // Unsimplified, the path shows the whole search (simplified, most runs give the same straight
+  // line).
+  ASSERT_EQ(run_tandem({"plan", problem, "--seed", "9", "--no-simplify", "--out", a}).exit_code, 0);
+  ASSERT_EQ(run_tandem({"plan", problem, "--seed", "9", "--no-simplify", "--out", b}).exit_code, 0);
+  ASSERT_EQ(run_tandem({"plan", problem, "--seed", "10", "--no-simplify", "--out", c}).exit_code,
+            0);
+  EXPECT_EQ(read(a), read(b));
+  EXPECT_NE(read(a), read(c));
+}
+
+TEST(Cli, CheckPathReportsTheFirstInvalidIndex) {
+  TempDir dir;
+  const auto problem = dir.write("w.toml", kWallScenario).string();
+  const auto path = dir.write("p.path", "-2 0 0 0 0 0 1\n-2 1 0 0 0 0 1\n2 1 0 0 0 0 1\n").string();
+  const test::RunResult r = run_tandem({"check-path", problem, path});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.out, HasSubstr("invalid at index 2: the motion from state 1 to state 2 collides"));
+}
+
+TEST(Cli, ReportsNoSolutionWithExitCodeOne) {
+  TempDir dir;
+  const auto problem =
+      dir.write("closed.toml", std::string(kWallScenario) +
+                                   "[[obstacle]]\nname = \"plug\"\nbox = [0.1, 0.8, 2]\n");
+  const test::RunResult r = run_tandem({"plan", problem.string(), "--time-limit", "0.3", "--json"});
+  EXPECT_EQ(r.exit_code, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  EXPECT_EQ(j["status"], "timeout");
+  EXPECT_TRUE(j["path_length"].is_null());
+}
+
+TEST(Cli, HelpDescribesEveryCommand) {
+  const test::RunResult top = run_tandem({"--help"});
+  EXPECT_EQ(top.exit_code, 0);
+  for (const char* c : {"plan", "check-path", "scenes", "render"})
+    EXPECT_THAT(top.out, HasSubstr(c));
+  const test::RunResult plan = run_tandem({"plan", "--help"});
+  EXPECT_EQ(plan.exit_code, 0);
+  for (const char* o : {"--planner", "--seed", "--time-limit", "--range", "--out", "--json"}) {
+    EXPECT_THAT(plan.out, HasSubstr(o));
+  }
+  EXPECT_EQ(run_tandem({"check-path", "--help"}).exit_code, 0);
+}
+
+TEST(Cli, BuiltinScenesCanBeListedAndExported) {
+  const test::RunResult list = run_tandem({"scenes"});
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_THAT(list.out, HasSubstr("cluttered-1"));
+  const test::RunResult text = run_tandem({"scenes", "cluttered-1"});
+  ASSERT_EQ(text.exit_code, 0);
+  // The exported file is a scenario tandem reads back.
+  TempDir dir;
+  const auto file = dir.write("c1.toml", text.out);
+  const auto path = (test::source_dir() / "scenes" / "cluttered-1.path").string();
+  EXPECT_EQ(run_tandem({"check-path", file.string(), path}).exit_code, 0);
+  expect_bad_input({"scenes", "nowhere"}, {"nowhere", "no built-in scene"});
+}
+
+TEST(Cli, RendersSvg) {
+  TempDir dir;
+  const auto svg = (dir.path() / "c1.svg").string();
+  const auto path = (test::source_dir() / "scenes" / "cluttered-1.path").string();
+  ASSERT_EQ(run_tandem({"render", "cluttered-1", path, "--out", svg}).exit_code, 0);
+  const std::string text = read(svg);
+  EXPECT_THAT(text, HasSubstr("<svg"));
+  EXPECT_THAT(text, HasSubstr("<polyline"));
+}
+
+}  // namespace
+}  // namespace tandem

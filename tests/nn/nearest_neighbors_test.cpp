@@ -1,0 +1,118 @@
+#include <gtest/gtest.h>
+
+#include "tandem/nn/kd_tree_nn.hpp"
+#include "tandem/nn/linear_nn.hpp"
+
+namespace tandem {
+namespace {
+
+/// Feeds the same points to the k-d tree and to brute force and compares their answers by distance
+/// (ties may be broken differently).
+void expect_same_answers(const SE3Space& space, std::vector<Config>& points,
+                         const std::vector<Config>& queries, std::size_t k) {
+  KdTreeNearestNeighbors fast(space, points);
+  LinearNearestNeighbors slow(space, points);
+  for (NodeId i = 0; i < points.size(); ++i) {
+    fast.add(i);
+    slow.add(i);
+  }
+  ASSERT_EQ(fast.size(), points.size());
+  std::vector<NodeId> a, b;
+  for (const Config& q : queries) {
+    ASSERT_DOUBLE_EQ(space.distance(q, points[fast.nearest(q)]),
+                     space.distance(q, points[slow.nearest(q)]));
+    fast.k_nearest(q, k, a);
+    slow.k_nearest(q, k, b);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_DOUBLE_EQ(space.distance(q, points[a[i]]), space.distance(q, points[b[i]]))
+          << "rank " << i;
+    }
+  }
+}
+
+std::vector<Config> samples(const SE3Space& space, std::size_t n, std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<Config> out;
+  for (std::size_t i = 0; i < n; ++i)
+    out.push_back(space.sample_uniform(rng));
+  return out;
+}
+
+TEST(KdTree, MatchesBruteForceOnUniformSE3Points) {
+  const SE3Space space(SpaceKind::se3, Bounds{{-10, -10, -10}, {10, 10, 10}});
+  auto points = samples(space, 5000, 1);
+  expect_same_answers(space, points, samples(space, 500, 2), 10);
+}
+
+TEST(KdTree, MatchesBruteForceWhenRotationDominates) {
+  // A small workspace and a heavy rotation weight: the translation lower bound prunes little, and
+  // the search must still be exact.
+  const SE3Space space(SpaceKind::se3, Bounds{{0, 0, 0}, {0.1, 0.1, 0.1}}, MetricWeights{1.0, 5.0});
+  auto points = samples(space, 3000, 3);
+  expect_same_answers(space, points, samples(space, 300, 4), 7);
+}
+
+TEST(KdTree, MatchesBruteForceInPlanarSpaces) {
+  const SE3Space space(SpaceKind::planar, Bounds{{-50, -50, 0}, {50, 50, 0}});
+  auto points = samples(space, 4000, 5);
+  expect_same_answers(space, points, samples(space, 300, 6), 5);
+}
+
+TEST(KdTree, StaysExactAndShallowOnPointsAddedAlongALine) {
+  // RRT-Connect adds long runs of nodes along straight motions.
+  const SE3Space space(SpaceKind::se3, Bounds{{0, 0, 0}, {100, 1, 1}});
+  std::vector<Config> points;
+  for (int i = 0; i < 4000; ++i) {
+    Config q;
+    q.t = Eigen::Vector3d(i * 0.025, 0.5, 0.5);
+    points.push_back(q);
+  }
+  expect_same_answers(space, points, samples(space, 200, 7), 4);
+}
+
+TEST(KdTree, HandlesManyPointsAtOnePosition) {
+  const SE3Space space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}});
+  Rng rng(8);
+  std::vector<Config> points;
+  for (int i = 0; i < 500; ++i) {
+    Config q = space.sample_uniform(rng);
+    q.t = Eigen::Vector3d(0.5, 0.5, 0.5);
+    points.push_back(q);
+  }
+  expect_same_answers(space, points, samples(space, 100, 9), 3);
+}
+
+TEST(KdTree, GrowsIncrementallyWhileQueried) {
+  const SE3Space space(SpaceKind::se3, Bounds{{-1, -1, -1}, {1, 1, 1}});
+  Rng rng(10);
+  std::vector<Config> points;
+  KdTreeNearestNeighbors fast(space, points);
+  LinearNearestNeighbors slow(space, points);
+  for (NodeId i = 0; i < 2000; ++i) {
+    points.push_back(
+        space.sample_uniform(rng));  // may reallocate: the index reads through the vector
+    fast.add(i);
+    slow.add(i);
+    const Config q = space.sample_uniform(rng);
+    ASSERT_DOUBLE_EQ(space.distance(q, points[fast.nearest(q)]),
+                     space.distance(q, points[slow.nearest(q)]));
+  }
+  fast.clear();
+  EXPECT_EQ(fast.size(), 0u);
+}
+
+TEST(KdTree, KNearestReturnsAllWhenKExceedsSize) {
+  const SE3Space space(SpaceKind::se3, Bounds{{-1, -1, -1}, {1, 1, 1}});
+  auto points = samples(space, 5, 12);
+  KdTreeNearestNeighbors fast(space, points);
+  for (NodeId i = 0; i < 5; ++i)
+    fast.add(i);
+  std::vector<NodeId> out;
+  fast.k_nearest(points[0], 10, out);
+  ASSERT_EQ(out.size(), 5u);
+  EXPECT_EQ(out[0], 0u);
+}
+
+}  // namespace
+}  // namespace tandem

@@ -1,0 +1,99 @@
+#include "tandem/scene/mesh_loader.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "support/test_support.hpp"
+#include "tandem/core/error.hpp"
+
+namespace tandem {
+namespace {
+
+using test::TempDir;
+using ::testing::HasSubstr;
+
+const char* kTetrahedronObj =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+    "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+const char* kTriangleStl =
+    "solid t\n"
+    " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 2 0 0\n   vertex 0 2 0\n  "
+    "endloop\n endfacet\n"
+    "endsolid t\n";
+
+/// Expects load_mesh to throw an InputError whose message names the file and contains `fault`.
+void expect_rejected(const std::filesystem::path& file, const std::string& fault) {
+  try {
+    load_mesh(file);
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(file.string()));
+    EXPECT_THAT(e.what(), HasSubstr(fault));
+  }
+}
+
+TEST(MeshLoader, ReadsObj) {
+  TempDir dir;
+  const LoadedMesh m = load_mesh(dir.write("t.obj", kTetrahedronObj));
+  EXPECT_EQ(m.mesh.triangle_count(), 4u);
+  EXPECT_EQ(m.degenerate_removed, 0u);
+  auto [lo, hi] = m.mesh.bounding_box();
+  EXPECT_TRUE(lo.isApprox(Eigen::Vector3d(0, 0, 0)));
+  EXPECT_TRUE(hi.isApprox(Eigen::Vector3d(1, 1, 1)));
+}
+
+TEST(MeshLoader, ReadsAsciiStl) {
+  TempDir dir;
+  const LoadedMesh m = load_mesh(dir.write("t.stl", kTriangleStl));
+  ASSERT_EQ(m.mesh.triangle_count(), 1u);
+  // Single precision, as OMPL.app computes it.
+  EXPECT_LT((m.vertex_mean - Eigen::Vector3d(2.0 / 3, 2.0 / 3, 0)).norm(), 1e-6);
+}
+
+TEST(MeshLoader, RemovesDegenerateTriangles) {
+  TempDir dir;
+  const auto file = dir.write("d.obj",
+                              "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\n"
+                              "f 1 2 3\nf 1 2 4\n");
+  const LoadedMesh m = load_mesh(file);
+  EXPECT_EQ(m.mesh.triangle_count(), 1u);
+  EXPECT_EQ(m.degenerate_removed, 1u);
+}
+
+TEST(MeshLoader, RejectsAMeshOfOnlyDegenerateTriangles) {
+  TempDir dir;
+  expect_rejected(dir.write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"), "no triangles");
+}
+
+TEST(MeshLoader, RejectsAMeshWithoutTriangles) {
+  TempDir dir;
+  expect_rejected(dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 2 1 0\n"), "");
+}
+
+TEST(MeshLoader, RejectsMissingFilesAndOtherFormats) {
+  TempDir dir;
+  expect_rejected(dir.path() / "absent.stl", "no such file");
+  expect_rejected(dir.write("model.blend", "whatever"), "unsupported mesh format");
+  expect_rejected(dir.path(), "unsupported mesh format");
+}
+
+TEST(MeshLoader, RejectsMalformedFiles) {
+  TempDir dir;
+  expect_rejected(dir.write("garbage.dae", "<COLLADA><this is not xml"), "cannot read mesh");
+  expect_rejected(dir.write("garbage.stl", std::string("\x00\x01\x02 binary junk", 17)), "");
+  expect_rejected(dir.write("bad.obj", "v 0 0 0\nf 1 2 3\n"), "");
+}
+
+TEST(SanitizeMesh, RejectsOutOfRangeIndicesAndNonFiniteVertices) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 3}};
+  EXPECT_THROW(sanitize_mesh(m, "m"), InputError);
+  m.triangles = {{0, 1, 2}};
+  m.vertices[1].x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(sanitize_mesh(m, "m"), InputError);
+}
+
+}  // namespace
+}  // namespace tandem

@@ -1,0 +1,56 @@
+#pragma once
+// Shared helpers for tandem's tests: scenes made of boxes, temporary folders, running the program.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tandem/scene/problem.hpp"
+
+namespace tandem::test {
+
+/// An axis-aligned box obstacle.
+Body box_body(const std::string& name, const Eigen::Vector3d& size,
+              const Eigen::Vector3d& position);
+
+/// A 1 x 0.2 x 0.2 bar object and a wall at x in [-0.05, 0.05] across the whole bounds [-3, 3]^2 x
+/// [-1, 1] but for a gap of 0.6 around y = 0; start at x = -2, goal at x = 2.
+Problem wall_with_gap_problem();
+
+/// A fresh folder under the system's temporary folder, removed at destruction.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path write(const std::string& name, const std::string& text) const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// The shared folder (../shared) if present; tests that need it GTEST_SKIP() otherwise.
+std::filesystem::path shared_dir();
+bool have_shared_data();
+#define TANDEM_REQUIRE_SHARED_DATA()                                                             \
+  do {                                                                                           \
+    if (!::tandem::test::have_shared_data())                                                     \
+      GTEST_SKIP() << "../shared/benchmarks/omplapp is absent: OMPL.app problems not available"; \
+  } while (0)
+
+std::filesystem::path source_dir();
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs the tandem program with the arguments (no shell), capturing stdout and stderr.
+RunResult run_tandem(const std::vector<std::string>& args);
+
+}  // namespace tandem::test
