@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tandem/collision/collision_checker.hpp"
+#include "tandem/core/stopwatch.hpp"
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
@@ -37,8 +38,21 @@ class MotionValidator {
   /// Inside the bounds and collision-free.
   bool is_valid(const Config& q) {
     ++checks_;
-    return space_.satisfies_bounds(q) && checker_.is_collision_free(q);
+    if (!space_.satisfies_bounds(q))
+      return false;
+    if (!profiling_)
+      return checker_.is_collision_free(q);
+    const Stopwatch watch;
+    const bool free = checker_.is_collision_free(q);
+    check_seconds_ += watch.seconds();
+    return free;
   }
+
+  /// Measures the time spent in collision queries (two clock reads per query; off by default).
+  void set_profiling(bool on) { profiling_ = on; }
+  bool profiling() const { return profiling_; }
+  /// Seconds spent in collision queries while profiling.
+  double check_seconds() const { return check_seconds_; }
 
   /// Whether the motion a -> b is valid, assuming a is. Checks b first, then the intermediate
   /// configurations by bisection (midpoint first), which finds a collision sooner on average than a
@@ -56,6 +70,8 @@ class MotionValidator {
   const SE3Space& space_;
   CollisionChecker& checker_;
   std::uint64_t checks_ = 0;
+  bool profiling_ = false;
+  double check_seconds_ = 0.0;
   std::vector<std::pair<unsigned, unsigned>>
       queue_;  // reused by check_motion, no allocation per call
 };

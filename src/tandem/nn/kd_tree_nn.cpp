@@ -35,17 +35,19 @@ std::uint32_t KdTreeNearestNeighbors::new_node() {
 
 void KdTreeNearestNeighbors::add(NodeId id) {
   const Eigen::Vector3d& t = points_[id].t;
-  std::vector<std::uint32_t>& path = path_;
-  path.clear();
+  path_.clear();
   std::uint32_t n = 0;
   for (;;) {
-    path.push_back(n);
-    ++nodes_[n].count;
-    if (nodes_[n].axis < 0)
+    path_.push_back(n);
+    Node& node = nodes_[n];
+    ++node.count;
+    node.lo = node.lo.cwiseMin(t);
+    node.hi = node.hi.cwiseMax(t);
+    if (node.axis < 0)
       break;
-    n = t[nodes_[n].axis] < nodes_[n].split ? nodes_[n].left : nodes_[n].right;
+    n = t[node.axis] < node.split ? node.left : node.right;
   }
-  nodes_[n].bucket.push_back(id);
+  nodes_[n].bucket.push_back({t, id});
   ++size_;
   if (nodes_[n].bucket.size() > kBucketSize)
     split_leaf(n);
@@ -53,13 +55,13 @@ void KdTreeNearestNeighbors::add(NodeId id) {
   // Depth allowed for a kAlpha-balanced tree of this size, plus slack for the bucket level.
   const double leaves = static_cast<double>(size_) / static_cast<double>(kBucketSize) + 1.0;
   const auto allowed = static_cast<std::size_t>(std::log(leaves) / std::log(1.0 / kAlpha)) + 2;
-  if (path.size() <= allowed)
+  if (path_.size() <= allowed)
     return;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Node& a = nodes_[path[i]];
+  for (std::size_t i = 0; i + 1 < path_.size(); ++i) {
+    const Node& a = nodes_[path_[i]];
     const std::uint32_t heavier = std::max(nodes_[a.left].count, nodes_[a.right].count);
     if (static_cast<double>(heavier) > kAlpha * static_cast<double>(a.count)) {
-      rebuild(path[i]);
+      rebuild(path_[i]);
       return;
     }
   }
@@ -68,7 +70,8 @@ void KdTreeNearestNeighbors::add(NodeId id) {
 void KdTreeNearestNeighbors::collect(std::uint32_t node, std::vector<NodeId>& ids) {
   Node& n = nodes_[node];
   if (n.axis < 0) {
-    ids.insert(ids.end(), n.bucket.begin(), n.bucket.end());
+    for (const Entry& e : n.bucket)
+      ids.push_back(e.id);
     return;
   }
   collect(n.left, ids);
@@ -88,18 +91,23 @@ void KdTreeNearestNeighbors::rebuild(std::uint32_t root) {
 void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iterator first,
                                    std::vector<NodeId>::iterator last) {
   const auto count = static_cast<std::size_t>(last - first);
-  nodes_[node].count = static_cast<std::uint32_t>(count);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
   for (auto it = first; it != last; ++it) {
     lo = lo.cwiseMin(points_[*it].t);
     hi = hi.cwiseMax(points_[*it].t);
   }
+  nodes_[node].count = static_cast<std::uint32_t>(count);
+  nodes_[node].lo = lo;
+  nodes_[node].hi = hi;
   int axis = 0;
   (hi - lo).maxCoeff(&axis);
   if (count <= kBucketSize || !(hi[axis] > lo[axis])) {
+    // A leaf (also when all points share one position: it then just grows).
     nodes_[node].axis = -1;
-    nodes_[node].bucket.assign(first, last);
+    nodes_[node].bucket.clear();
+    for (auto it = first; it != last; ++it)
+      nodes_[node].bucket.push_back({points_[*it].t, *it});
     return;
   }
   auto mid = first + static_cast<std::ptrdiff_t>(count / 2);
@@ -108,7 +116,7 @@ void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iter
   double split = points_[*mid].t[axis];
   if (split <= lo[axis])
     split = std::nextafter(lo[axis], hi[axis]);
-  // Points at the split value go right.
+  // Points at the split value go right; both sides are non-empty since lo < split <= hi.
   mid = std::partition(first, last, [&](NodeId a) { return points_[a].t[axis] < split; });
   const std::uint32_t l = new_node();
   const std::uint32_t r = new_node();
@@ -116,39 +124,48 @@ void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iter
   nodes_[node].split = split;
   nodes_[node].left = l;
   nodes_[node].right = r;
+  nodes_[node].bucket.clear();
+  nodes_[node].bucket.shrink_to_fit();
   build(l, first, mid);
   build(r, mid, last);
 }
 
 void KdTreeNearestNeighbors::split_leaf(std::uint32_t leaf) {
-  std::vector<NodeId> ids = std::move(nodes_[leaf].bucket);
-  nodes_[leaf] = Node{};
+  std::vector<NodeId> ids;
+  for (const Entry& e : nodes_[leaf].bucket)
+    ids.push_back(e.id);
   build(leaf, ids.begin(), ids.end());
 }
 
-// Depth-first search, nearer child first. `offset` holds, per axis, the distance from q to the
-// current cell along that axis, and offset2 its squared norm (Arya & Mount's incremental distance).
+// Depth-first, the child whose box is nearer first; a child is skipped when the weighted distance
+// to its box reaches the current bound.
 template <class Visit>
-void KdTreeNearestNeighbors::search(std::uint32_t n, const Config& q, std::array<double, 3>& offset,
-                                    double offset2, Visit& visit) const {
+void KdTreeNearestNeighbors::search(std::uint32_t n, const Config& q, Visit& visit) const {
   const Node& node = nodes_[n];
+  const double wt2 = space_.weights().translation * space_.weights().translation;
   if (node.axis < 0) {
-    for (NodeId id : node.bucket)
-      visit.consider(id, space_.distance(q, points_[id]));
+    // The translation term alone often exceeds the bound: skip the rotation term (an atan2) then.
+    for (const Entry& e : node.bucket) {
+      const double bound = visit.bound();
+      if (wt2 * (q.t - e.t).squaredNorm() >= bound * bound)
+        continue;
+      visit.consider(e.id, space_.distance(q, points_[e.id]));
+    }
     return;
   }
-  const int axis = node.axis;
-  const double diff = q.t[axis] - node.split;
-  const std::uint32_t near_child = diff < 0.0 ? node.left : node.right;
-  const std::uint32_t far_child = diff < 0.0 ? node.right : node.left;
-  search(near_child, q, offset, offset2, visit);
-  const double old = offset[static_cast<std::size_t>(axis)];
-  const double far2 = offset2 - old * old + diff * diff;
-  if (space_.weights().translation * std::sqrt(far2) < visit.bound()) {
-    offset[static_cast<std::size_t>(axis)] = std::abs(diff);
-    search(far_child, q, offset, far2, visit);
-    offset[static_cast<std::size_t>(axis)] = old;
-  }
+  const double dl = wt2 * nodes_[node.left].box_distance2(q.t);
+  const double dr = wt2 * nodes_[node.right].box_distance2(q.t);
+  const bool left_first = dl <= dr;
+  const std::uint32_t first = left_first ? node.left : node.right;
+  const std::uint32_t second = left_first ? node.right : node.left;
+  const double d_first = left_first ? dl : dr;
+  const double d_second = left_first ? dr : dl;
+  double bound = visit.bound();
+  if (d_first < bound * bound)
+    search(first, q, visit);
+  bound = visit.bound();
+  if (d_second < bound * bound)
+    search(second, q, visit);
 }
 
 NodeId KdTreeNearestNeighbors::nearest(const Config& q) const {
@@ -165,8 +182,7 @@ NodeId KdTreeNearestNeighbors::nearest(const Config& q) const {
       }
     }
   } best;
-  std::array<double, 3> offset{0.0, 0.0, 0.0};
-  search(0, q, offset, 0.0, best);
+  search(0, q, best);
   return best.id;
 }
 
@@ -190,8 +206,7 @@ void KdTreeNearestNeighbors::k_nearest(const Config& q, std::size_t k,
       }
     }
   } best{k, {}};
-  std::array<double, 3> offset{0.0, 0.0, 0.0};
-  search(0, q, offset, 0.0, best);
+  search(0, q, best);
   out.resize(best.heap.size());
   for (std::size_t i = out.size(); i-- > 0;) {
     out[i] = best.heap.top().second;

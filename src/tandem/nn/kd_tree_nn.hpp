@@ -2,16 +2,17 @@
 // A dynamic, bucketed k-d tree over the translation of configurations, searched exactly under the
 // full SE(3) metric.
 //
-// Cells split on translation coordinates only. The lower bound used for pruning is the weighted
-// Euclidean distance from the query's translation to the cell, which never exceeds the metric
-// w_t |dt| + w_r angle (the rotation term is >= 0), so the search is exact for any rotation weight.
+// Nodes split on translation coordinates only, and each keeps the bounding box of the points below
+// it. The lower bound used for pruning is the weighted Euclidean distance from the query's
+// translation to that box, which never exceeds the metric w_t |dt| + w_r angle (the rotation term
+// is >= 0), so the search is exact for any rotation weight; tight boxes (rather than cells) keep it
+// fast when the tree is clustered and the query far away, as RRT queries often are.
+//
 // Points are inserted one at a time (RRT trees grow this way); a leaf splits at the median of its
 // widest translation axis when it holds more than kBucketSize points. RRT-Connect adds long runs of
 // points along a line, which would make a plain k-d tree a list; the tree stays balanced as a
 // scapegoat tree does: when an insertion lands too deep, the highest unbalanced subtree on its path
 // is rebuilt at medians (amortised O(log n) per insertion).
-
-#include <array>
 
 #include "tandem/nn/nearest_neighbors.hpp"
 
@@ -30,15 +31,28 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   void k_nearest(const Config& q, std::size_t k, std::vector<NodeId>& out) const override;
 
  private:
-  static constexpr double kAlpha =
-      0.75;  ///< a child may hold at most this share of its parent's points
+  /// A child may hold at most this share of its parent's points before the subtree is rebuilt.
+  static constexpr double kAlpha = 0.75;
+
+  /// A point in a leaf, with its translation inline so that a leaf scan reads contiguous memory.
+  struct Entry {
+    Eigen::Vector3d t;
+    NodeId id;
+  };
 
   struct Node {
     int axis = -1;       ///< -1 for a leaf
     double split = 0.0;  ///< points with t[axis] < split go left
     std::uint32_t left = 0, right = 0;
-    std::uint32_t count = 0;     ///< points in the subtree
-    std::vector<NodeId> bucket;  ///< leaf only
+    std::uint32_t count = 0;  ///< points in the subtree
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    std::vector<Entry> bucket;  ///< leaf only
+
+    /// Squared distance from p to the box of the subtree's points.
+    double box_distance2(const Eigen::Vector3d& p) const {
+      return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).squaredNorm();
+    }
   };
 
   std::uint32_t new_node();
@@ -49,8 +63,7 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   void build(std::uint32_t node, std::vector<NodeId>::iterator first,
              std::vector<NodeId>::iterator last);
   template <class Visit>
-  void search(std::uint32_t node, const Config& q, std::array<double, 3>& offset, double offset2,
-              Visit& visit) const;
+  void search(std::uint32_t node, const Config& q, Visit& visit) const;
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> free_;  ///< node slots released by rebuilds

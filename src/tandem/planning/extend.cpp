@@ -6,7 +6,7 @@ Extension extend(Tree& tree, const Config& q_target, double range, MotionValidat
                  ExtendMode mode) {
   const SE3Space& space = validator.space();
   Extension e;
-  e.near = tree.nn->nearest(q_target);
+  e.near = tree.nearest(q_target);
   const Config& q_near = tree.nodes[e.near];
   const double d = space.distance(q_near, q_target);
   const bool within = d <= range;

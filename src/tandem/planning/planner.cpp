@@ -50,6 +50,13 @@ void Planner::update_counts() {
     stats_.edges += t->size() - 1;
   }
   stats_.collision_checks = validator_.checks() - checks_at_start_;
+  stats_.collision_time_s = validator_.check_seconds() - check_seconds_at_start_;
+  stats_.nearest_time_s = nearest_seconds_;
+}
+
+void Planner::attach(Tree& tree) {
+  if (settings_.profile)
+    tree.profile_seconds = &nearest_seconds_;
 }
 
 PlannerStatus Planner::step() {
@@ -58,6 +65,9 @@ PlannerStatus Planner::step() {
   if (!started_) {
     started_ = true;
     checks_at_start_ = validator_.checks();
+    if (settings_.profile)
+      validator_.set_profiling(true);
+    check_seconds_at_start_ = validator_.check_seconds();
     if (!validator_.is_valid(start_))
       status_ = PlannerStatus::invalid_start;
     else if (!validator_.is_valid(goal_))

@@ -52,6 +52,8 @@ struct PlannerSettings {
   std::uint64_t seed = 1;   ///< the run's only source of randomness
   ExtendMode extend = ExtendMode::classic;
   std::string nearest_neighbors = "kdtree";  ///< "kdtree" or "linear"
+  bool profile =
+      false;  ///< measure the time spent in collision checks and nearest-neighbour queries
 };
 
 struct PlannerStats {
@@ -60,6 +62,8 @@ struct PlannerStats {
   std::size_t nodes = 0;               ///< in all trees, roots included
   std::size_t edges = 0;               ///< nodes minus roots
   std::uint64_t collision_checks = 0;  ///< configuration checks by this planner's validator
+  double collision_time_s = 0.0;       ///< time in collision queries (with settings.profile)
+  double nearest_time_s = 0.0;  ///< time in nearest-neighbour queries (with settings.profile)
 };
 
 struct Termination {
@@ -100,6 +104,8 @@ class Planner {
   virtual bool iterate() = 0;
 
   void update_counts();
+  /// Subclasses call this for each tree they own, after constructing it.
+  void attach(Tree& tree);
 
   MotionValidator& validator_;
   const SE3Space& space_;
@@ -113,6 +119,8 @@ class Planner {
   PlannerStatus status_ = PlannerStatus::running;
   bool started_ = false;
   std::uint64_t checks_at_start_ = 0;
+  double check_seconds_at_start_ = 0.0;
+  double nearest_seconds_ = 0.0;
   PlannerStats stats_;
   std::atomic<bool> interrupt_requested_{false};
 };

@@ -7,7 +7,9 @@ namespace tandem {
 RRT::RRT(MotionValidator& validator, const Config& start, const Config& goal,
          const PlannerSettings& settings)
     : Planner(validator, start, goal, settings),
-      tree_(validator.space(), settings.nearest_neighbors, start) {}
+      tree_(validator.space(), settings.nearest_neighbors, start) {
+  attach(tree_);
+}
 
 bool RRT::iterate() {
   const bool toward_goal = rng_.uniform01() < settings_.goal_bias;

@@ -8,7 +8,10 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
                        const PlannerSettings& settings)
     : Planner(validator, start, goal, settings),
       start_tree_(validator.space(), settings.nearest_neighbors, start),
-      goal_tree_(validator.space(), settings.nearest_neighbors, goal) {}
+      goal_tree_(validator.space(), settings.nearest_neighbors, goal) {
+  attach(start_tree_);
+  attach(goal_tree_);
+}
 
 bool RRTConnect::iterate() {
   Tree& tree_a = extend_start_tree_ ? start_tree_ : goal_tree_;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tandem/core/stopwatch.hpp"
 #include "tandem/nn/nearest_neighbors.hpp"
 
 namespace tandem {
@@ -31,6 +32,16 @@ struct Tree {
   }
   std::size_t size() const { return nodes.size(); }
 
+  /// The node nearest to q; its time is added to *profile_seconds when that is set.
+  NodeId nearest(const Config& q) const {
+    if (profile_seconds == nullptr)
+      return nn->nearest(q);
+    const Stopwatch watch;
+    const NodeId id = nn->nearest(q);
+    *profile_seconds += watch.seconds();
+    return id;
+  }
+
   /// Configurations from the root to `id`, root first.
   std::vector<Config> path_from_root(NodeId id) const {
     std::vector<Config> path;
@@ -42,6 +53,7 @@ struct Tree {
   std::vector<Config> nodes;
   std::vector<NodeId> parent;  ///< kNoParent for the root
   std::unique_ptr<NearestNeighbors> nn;
+  double* profile_seconds = nullptr;  ///< where nearest() adds its time, if profiling
 };
 
 }  // namespace tandem
