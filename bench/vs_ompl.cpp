@@ -1,24 +1,15 @@
 // tandem's BiRRT against OMPL 1.5's RRTConnect, side by side on OMPL.app's problems.
 //
 // Fairness: both planners get the same problem (loaded once by tandem's OMPL.app loader), the same
-// collision checker (tandem's FCL wrapper: OMPL's StateValidityChecker calls it), the same bounds test,
-// the same motion resolution (OMPL's longestValidSegmentFraction = the problem's resolution) and the
-// same range. Runs alternate between the planners (and which goes first), each with the same time
-// limit, on one thread. OMPL keeps its own defaults otherwise (GNAT nearest neighbours,
+// collision checker (tandem's FCL wrapper: OMPL's StateValidityChecker calls it), the same bounds
+// test, the same motion resolution (OMPL's longestValidSegmentFraction = the problem's resolution)
+// and the same range. Runs alternate between the planners (and which goes first), each with the
+// same time limit, on one thread. OMPL keeps its own defaults otherwise (GNAT nearest neighbours,
 // DiscreteMotionValidator).
 //
 // Output: a table per problem (success rates, median times with unsolved runs counted at the time
 // limit, median collision checks, median time ratio tandem/OMPL), and one JSON line per run.
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <iostream>
-#include <map>
-
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
@@ -27,6 +18,15 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
@@ -132,7 +132,8 @@ class OmplSide {
     RunResult r;
     r.planner = "ompl-rrtconnect";
     const tandem::Stopwatch watch;
-    const ob::PlannerStatus status = setup_->getPlanner()->solve(ob::timedPlannerTerminationCondition(time_limit));
+    const ob::PlannerStatus status =
+        setup_->getPlanner()->solve(ob::timedPlannerTerminationCondition(time_limit));
     r.time_s = watch.seconds();
     r.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
     r.checks = validator_.checks() - before;
@@ -141,7 +142,10 @@ class OmplSide {
     r.nodes = data.numVertices();
     if (r.solved) {
       tandem::Path path;
-      for (const ob::State* s : setup_->getProblemDefinition()->getSolutionPath()->as<og::PathGeometric>()->getStates()) {
+      for (const ob::State* s : setup_->getProblemDefinition()
+                                    ->getSolutionPath()
+                                    ->as<og::PathGeometric>()
+                                    ->getStates()) {
         path.push_back(from_ompl(s, problem_.space));
       }
       r.path_length = tandem::path_length(problem_.space, path);
@@ -157,8 +161,9 @@ class OmplSide {
   double max_extent_ = 0.0;
 };
 
-RunResult run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator, double range,
-                     std::uint64_t seed, double time_limit, bool profile, tandem::ExtendMode extend) {
+RunResult run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator,
+                     double range, std::uint64_t seed, double time_limit, bool profile,
+                     tandem::ExtendMode extend) {
   tandem::PlannerSettings settings;
   settings.extend = extend;
   settings.seed = seed;
@@ -177,12 +182,14 @@ RunResult run_tandem(const tandem::Problem& problem, tandem::MotionValidator& va
   r.nodes = planner->stats().nodes;
   r.collision_time_s = planner->stats().collision_time_s;
   r.nearest_time_s = planner->stats().nearest_time_s;
-  if (r.solved) r.path_length = tandem::path_length(problem.space, planner->solution());
+  if (r.solved)
+    r.path_length = tandem::path_length(problem.space, planner->solution());
   return r;
 }
 
 double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
+  if (v.empty())
+    return std::nan("");
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -193,7 +200,8 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   CLI::App app{"tandem's BiRRT against OMPL's RRTConnect on OMPL.app problems, runs alternating"};
   std::string shared = "../shared";
-  std::vector<std::string> problems = {"Easy", "cubicles", "Twistycool", "alpha-1.5", "alpha-1.2", "bugtrap", "Apartment"};
+  std::vector<std::string> problems = {"Easy",      "cubicles", "Twistycool", "alpha-1.5",
+                                       "alpha-1.2", "bugtrap",  "Apartment"};
   int runs = 20;
   double time_limit = 60.0;
   std::uint64_t seed = 1;
@@ -207,7 +215,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "First seed; run i uses seed + i (OMPL is seeded once with it)");
   app.add_option("--jsonl", jsonl, "Also write one JSON line per run here");
-  app.add_flag("--profile", profile, "Time tandem's collision checks and nearest-neighbour queries");
+  app.add_flag("--profile", profile,
+               "Time tandem's collision checks and nearest-neighbour queries");
   app.add_option("--extend", extend, "tandem's extension: classic or last-valid")
       ->check(CLI::IsMember({"classic", "last-valid"}));
   CLI11_PARSE(app, argc, argv);
@@ -215,13 +224,15 @@ int main(int argc, char** argv) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   ompl::RNG::setSeed(seed);
   std::ofstream lines;
-  if (!jsonl.empty()) lines.open(jsonl);
+  if (!jsonl.empty())
+    lines.open(jsonl);
 
-  std::printf("%-11s %5s %9s %9s %11s %11s %13s %13s %9s\n", "problem", "runs", "ok tandem", "ok OMPL", "t tandem s",
-              "t OMPL s", "checks tandem", "checks OMPL", "t ratio");
+  std::printf("%-11s %5s %9s %9s %11s %11s %13s %13s %9s\n", "problem", "runs", "ok tandem",
+              "ok OMPL", "t tandem s", "t OMPL s", "checks tandem", "checks OMPL", "t ratio");
   try {
     for (const std::string& name : problems) {
-      const auto cfg = std::filesystem::path(shared) / "benchmarks" / "omplapp" / "3D" / (name + ".cfg");
+      const auto cfg =
+          std::filesystem::path(shared) / "benchmarks" / "omplapp" / "3D" / (name + ".cfg");
       const tandem::Problem problem = tandem::load_ompl_app_problem(cfg);
       const double limit = std::min(time_limit, problem.hints.time_limit.value_or(time_limit));
       tandem::CollisionChecker checker(problem.scene);
@@ -229,7 +240,8 @@ int main(int argc, char** argv) {
       const double range = problem.hints.range.count("birrt") ? problem.hints.range.at("birrt")
                                                               : problem.space.default_range();
       OmplSide ompl_side(problem, validator, range);
-      if (std::abs(ompl_side.max_extent() - problem.space.max_extent()) > 1e-9 * problem.space.max_extent() ||
+      if (std::abs(ompl_side.max_extent() - problem.space.max_extent()) >
+              1e-9 * problem.space.max_extent() ||
           std::abs(ompl_side.range() - range) > 1e-12 * range) {
         throw std::logic_error("OMPL's space does not match tandem's for " + name);
       }
@@ -238,15 +250,22 @@ int main(int argc, char** argv) {
         const bool tandem_first = i % 2 == 0;
         for (int turn = 0; turn < 2; ++turn) {
           RunResult r = (turn == 0) == tandem_first
-                            ? run_tandem(problem, validator, range, seed + static_cast<std::uint64_t>(i), limit, profile,
-                                         extend == "last-valid" ? tandem::ExtendMode::last_valid : tandem::ExtendMode::classic)
+                            ? run_tandem(problem, validator, range,
+                                         seed + static_cast<std::uint64_t>(i), limit, profile,
+                                         extend == "last-valid" ? tandem::ExtendMode::last_valid
+                                                                : tandem::ExtendMode::classic)
                             : ompl_side.run(limit);
           if (lines.is_open()) {
-            lines << nlohmann::json{{"problem", name},           {"planner", r.planner},
-                                    {"run", i},                  {"seed", seed + static_cast<std::uint64_t>(i)},
-                                    {"solved", r.solved},        {"time_s", r.time_s},
-                                    {"collision_checks", r.checks}, {"nodes", r.nodes},
-                                    {"path_length", r.path_length}, {"time_limit_s", limit},
+            lines << nlohmann::json{{"problem", name},
+                                    {"planner", r.planner},
+                                    {"run", i},
+                                    {"seed", seed + static_cast<std::uint64_t>(i)},
+                                    {"solved", r.solved},
+                                    {"time_s", r.time_s},
+                                    {"collision_checks", r.checks},
+                                    {"nodes", r.nodes},
+                                    {"path_length", r.path_length},
+                                    {"time_limit_s", limit},
                                     {"collision_time_s", r.collision_time_s},
                                     {"nearest_time_s", r.nearest_time_s}}
                          .dump()
@@ -271,8 +290,8 @@ int main(int argc, char** argv) {
       double t_t, t_o, c_t, c_o;
       summary("tandem-birrt", ok_t, t_t, c_t);
       summary("ompl-rrtconnect", ok_o, t_o, c_o);
-      std::printf("%-11s %5d %8d%% %8d%% %11.4f %11.4f %13.0f %13.0f %9.3f\n", name.c_str(), runs, 100 * ok_t / runs,
-                  100 * ok_o / runs, t_t, t_o, c_t, c_o, t_t / t_o);
+      std::printf("%-11s %5d %8d%% %8d%% %11.4f %11.4f %13.0f %13.0f %9.3f\n", name.c_str(), runs,
+                  100 * ok_t / runs, 100 * ok_o / runs, t_t, t_o, c_t, c_o, t_t / t_o);
       if (profile) {
         double total = 0, coll = 0, nn = 0;
         for (const auto& r : results["tandem-birrt"]) {
@@ -280,8 +299,10 @@ int main(int argc, char** argv) {
           coll += r.collision_time_s;
           nn += r.nearest_time_s;
         }
-        std::printf("  tandem profile: collision checks %.1f%%, nearest neighbour %.1f%%, the rest %.1f%%\n",
-                    100 * coll / total, 100 * nn / total, 100 * (total - coll - nn) / total);
+        std::printf(
+            "  tandem profile: collision checks %.1f%%, nearest neighbour %.1f%%, the rest "
+            "%.1f%%\n",
+            100 * coll / total, 100 * nn / total, 100 * (total - coll - nn) / total);
       }
       std::fflush(stdout);
     }

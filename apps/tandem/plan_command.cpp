@@ -25,7 +25,7 @@ struct PlanArgs {
   std::optional<double> time_limit;
   std::optional<double> range;
   std::optional<double> goal_bias;
-  std::string extend = "classic";
+  std::optional<std::string> extend;
   std::string out;
   std::string svg;
   bool json = false;
@@ -47,7 +47,8 @@ int run_plan(const PlanArgs& args) {
   }
   settings.goal_bias =
       args.goal_bias.value_or(problem.hints.goal_bias.value_or(settings.goal_bias));
-  settings.extend = args.extend == "last-valid" ? ExtendMode::last_valid : ExtendMode::classic;
+  settings.extend =
+      *parse_extend_mode(args.extend.value_or(problem.hints.extend.value_or("classic")));
   const double time_limit =
       args.time_limit.value_or(problem.hints.time_limit.value_or(kDefaultTimeLimit));
 
@@ -95,6 +96,7 @@ int run_plan(const PlanArgs& args) {
     j["solved"] = solved;
     j["seed"] = settings.seed;
     j["range"] = planner->range();
+    j["extend"] = std::string(to_string(settings.extend));
     j["time_limit_s"] = time_limit;
     j["time_s"] = stats.time_s;
     j["iterations"] = stats.iterations;
@@ -149,8 +151,9 @@ Command add_plan_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   app.add_option(
          "--extend", args->extend,
-         "How a tree grows toward a target it cannot reach: classic (all or nothing, default) or "
-         "last-valid (keep the last valid configuration)")
+         "How a tree grows toward a target it cannot reach: classic (all or nothing; the default "
+         "unless the problem says otherwise) or last-valid (keep the last valid configuration, the "
+         "papers' Add_Tree)")
       ->check(CLI::IsMember({"classic", "last-valid"}));
   app.add_option("--out", args->out, "Write the path here, in OMPL's path format");
   app.add_option("--svg", args->svg, "Draw the problem and the path into this SVG file");

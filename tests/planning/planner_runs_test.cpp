@@ -71,7 +71,29 @@ TEST(OmplAppRuns, RrtSolvesEasy) {
   EXPECT_TRUE(r.path_valid);
 }
 
-TEST(BuiltinSceneRuns, GrowsTheSameValidTreesForASeed) {
+class BuiltinSceneRuns : public ::testing::TestWithParam<std::uint64_t> {};
+
+TEST_P(BuiltinSceneRuns, SolveClutteredEnvironment1WithTheScenesSettings) {
+  // BiRRT with the scene's own settings (last-valid extension, the default range), as `tandem plan`
+  // runs it.
+  const Problem problem = load_problem("cluttered-1");
+  CollisionChecker checker(problem.scene);
+  MotionValidator validator(problem.space, checker);
+  PlannerSettings settings;
+  settings.seed = GetParam();
+  settings.extend = *parse_extend_mode(problem.hints.extend.value_or("classic"));
+  auto planner = make_planner("birrt", validator, problem.start, problem.goal, settings);
+  Termination t;
+  t.time_limit_s = 120.0;
+  ASSERT_EQ(planner->solve(t), PlannerStatus::solved);
+  CollisionChecker fresh(problem.scene);
+  MotionValidator check(problem.space, fresh);
+  EXPECT_TRUE(check_path(planner->solution(), check).valid);
+}
+
+INSTANTIATE_TEST_SUITE_P(FirstSeeds, BuiltinSceneRuns, ::testing::Values(1, 2, 3));
+
+TEST(BuiltinSceneGrowth, GrowsTheSameValidTreesForASeed) {
   const Problem problem = load_problem("cluttered-1");
   auto grow = [&](std::uint64_t seed) {
     CollisionChecker checker(problem.scene);

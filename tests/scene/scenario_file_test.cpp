@@ -64,6 +64,7 @@ rpy_deg = [0, 0, 90]
 
 [planner]
 name = "rrt"
+extend = "last-valid"
 range = 0.5
 goal_bias = 0.1
 time_limit = 5
@@ -125,6 +126,7 @@ TEST(ScenarioFile, ReadsEveryKindOfGeometry) {
   EXPECT_TRUE(p.goal.t.isApprox(Eigen::Vector3d(4, 0, 1)));
   EXPECT_NEAR(SE3Space::yaw(p.goal.q), std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(p.hints.planner, "rrt");
+  EXPECT_EQ(p.hints.extend, "last-valid");
   EXPECT_DOUBLE_EQ(p.hints.range.at("rrt"), 0.5);
   EXPECT_DOUBLE_EQ(*p.hints.goal_bias, 0.1);
   EXPECT_EQ(*p.hints.seed, 42u);
@@ -173,6 +175,8 @@ TEST(ScenarioFile, ReportsValuesOfTheWrongTypeOrRange) {
   EXPECT_THAT(s.error("goal_bias = 0.1", "goal_bias = 1.5"),
               HasSubstr("goal_bias must be in [0, 1]"));
   EXPECT_THAT(s.error("name = \"rrt\"", "name = \"prm\""), HasSubstr("planner.name must be"));
+  EXPECT_THAT(s.error("extend = \"last-valid\"", "extend = \"lazy\""),
+              HasSubstr("planner.extend must be"));
   EXPECT_THAT(s.error("scale = 2.0", "scale = 0"), HasSubstr("scale must be positive"));
   EXPECT_THAT(s.error("rpy_deg = [10, 0, 0]", "rpy_deg = [10, 0, 0]\nquaternion = [0, 0, 0, 1]"),
               HasSubstr("more than once"));

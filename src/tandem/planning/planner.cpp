@@ -28,6 +28,18 @@ std::string_view to_string(PlannerStatus status) {
   return "unknown";
 }
 
+std::string_view to_string(ExtendMode mode) {
+  return mode == ExtendMode::last_valid ? "last-valid" : "classic";
+}
+
+std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
+  if (name == "classic")
+    return ExtendMode::classic;
+  if (name == "last-valid")
+    return ExtendMode::last_valid;
+  return std::nullopt;
+}
+
 Planner::Planner(MotionValidator& validator, const Config& start, const Config& goal,
                  const PlannerSettings& settings)
     : validator_(validator),

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +43,10 @@ enum class ExtendMode : std::uint8_t {
                ///< RRTConnect)
   last_valid,  ///< the papers' Add_Tree: the last valid configuration along the motion is added
 };
+
+/// "classic" or "last-valid" (the names the command line and scenario files use).
+std::string_view to_string(ExtendMode mode);
+std::optional<ExtendMode> parse_extend_mode(std::string_view name);
 
 /// Settings of the automatic planners, with their defaults. Declared once; the CLI, the benchmark
 /// and (later) the viewer read them from here.

@@ -8,22 +8,57 @@
 namespace tandem {
 namespace {
 
-struct WorldTriangle {
-  Eigen::Vector3d p[3];
+/// Something to draw: a convex part (drawn as the outline of its projection) or one triangle of a
+/// mesh.
+struct Item {
+  std::vector<Eigen::Vector3d> points;  ///< world frame
   Color color;
+  bool convex;  ///< true: draw the convex hull of the projected points
 };
 
-std::vector<WorldTriangle> world_triangles(const Body& body, const Eigen::Isometry3d& X_WB) {
-  std::vector<WorldTriangle> out;
+void add_body(const Body& body, const Eigen::Isometry3d& X_WB, std::vector<Item>& out) {
   for (const Part& part : body.parts) {
-    const TriangleMesh mesh = tessellate(part.geometry, 16);
+    const TriangleMesh mesh = tessellate(part.geometry, 24);
     const Eigen::Isometry3d X = X_WB * part.pose;
+    if (!std::holds_alternative<MeshShape>(part.geometry)) {
+      Item item{{}, body.color, true};
+      for (const auto& v : mesh.vertices)
+        item.points.push_back(X * v);
+      out.push_back(std::move(item));
+      continue;
+    }
     for (const auto& t : mesh.triangles) {
       out.push_back({{X * mesh.vertices[t[0]], X * mesh.vertices[t[1]], X * mesh.vertices[t[2]]},
-                     body.color});
+                     body.color,
+                     false});
     }
   }
-  return out;
+}
+
+/// Andrew's monotone chain.
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) {
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (p.size() < 3)
+    return p;
+  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  std::vector<Eigen::Vector2d> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0)
+      --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0)
+      --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
 }
 
 std::string hex(const Color& c, double shade) {
@@ -35,9 +70,11 @@ std::string hex(const Color& c, double shade) {
   return buf;
 }
 
-/// One orthographic view: world axes (u, v) to the panel, `depth` toward the viewer.
+/// One orthographic view: world axes (u, v) to the panel; the viewer looks along -depth_sign *
+/// depth.
 struct View {
   int u, v, depth;
+  double depth_sign;
   const char* title;
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();
   double scale = 1.0;
@@ -46,76 +83,84 @@ struct View {
   Eigen::Vector2d project(const Eigen::Vector3d& p) const {
     return {x0 + (p[u] - lo.x()) * scale, y0 + (hi.y() - p[v]) * scale};
   }
+  /// Larger is nearer to the viewer.
+  double nearness(const Item& item) const {
+    double s = 0.0;
+    for (const auto& p : item.points)
+      s += p[depth];
+    return depth_sign * s / static_cast<double>(item.points.size());
+  }
 };
+
+/// Configurations evenly spaced along the path by length, start and goal included.
+std::vector<Config> snapshots(const SE3Space& space, const Path& path, int between) {
+  std::vector<Config> out{path.front()};
+  const double total = path_length(space, path);
+  double walked = 0.0;
+  std::size_t seg = 0;
+  for (int i = 1; i <= between && total > 0.0; ++i) {
+    const double target = total * i / (between + 1);
+    while (seg + 1 < path.size() && walked + space.distance(path[seg], path[seg + 1]) < target) {
+      walked += space.distance(path[seg], path[seg + 1]);
+      ++seg;
+    }
+    if (seg + 1 >= path.size())
+      break;
+    const double d = space.distance(path[seg], path[seg + 1]);
+    out.push_back(space.interpolate(path[seg], path[seg + 1], d > 0 ? (target - walked) / d : 0.0));
+  }
+  out.push_back(path.back());
+  return out;
+}
 
 }  // namespace
 
 std::string render_svg(const Problem& problem, const Path& path, const SvgOptions& options) {
-  std::vector<WorldTriangle> scene;
-  for (const Body& b : problem.scene.obstacles) {
-    auto tris = world_triangles(b, Eigen::Isometry3d::Identity());
-    scene.insert(scene.end(), tris.begin(), tris.end());
+  std::vector<Item> obstacles;
+  for (const Body& b : problem.scene.obstacles)
+    add_body(b, Eigen::Isometry3d::Identity(), obstacles);
+  if (obstacles.size() > options.max_triangles) {
+    // Keep every k-th item: a large mesh stays recognisable and the file stays small.
+    const std::size_t k = (obstacles.size() + options.max_triangles - 1) / options.max_triangles;
+    std::vector<Item> thinned;
+    for (std::size_t i = 0; i < obstacles.size(); i += k)
+      thinned.push_back(obstacles[i]);
+    obstacles.swap(thinned);
   }
-  if (scene.size() > options.max_triangles) {
-    // Keep every k-th triangle: a large mesh stays recognisable and the file stays small.
-    const std::size_t k = (scene.size() + options.max_triangles - 1) / options.max_triangles;
-    std::vector<WorldTriangle> thinned;
-    for (std::size_t i = 0; i < scene.size(); i += k)
-      thinned.push_back(scene[i]);
-    scene.swap(thinned);
+  const std::vector<Config> poses =
+      path.empty() ? std::vector<Config>{problem.start, problem.goal}
+                   : snapshots(problem.space, path, std::max(0, options.object_snapshots));
+  std::vector<std::vector<Item>> objects;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    Body body = problem.scene.object;
+    body.color =
+        i == 0 ? Color{0.1, 0.7, 0.2, 1}
+               : (i + 1 == poses.size() ? Color{0.85, 0.1, 0.1, 1} : Color{0.95, 0.6, 0.1, 1});
+    objects.emplace_back();
+    add_body(body, poses[i].pose(), objects.back());
   }
 
   // Extent: the bounds, the obstacles and the object along the path.
   const Bounds& bounds = problem.space.bounds();
   Eigen::Vector3d lo = bounds.min, hi = bounds.max;
-  for (const auto& t : scene) {
-    for (const auto& p : t.p) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-  }
-  std::vector<Config> snapshots;
-  if (!path.empty()) {
-    snapshots.push_back(path.front());
-    const double total = path_length(problem.space, path);
-    const int n = std::max(0, options.object_snapshots);
-    double walked = 0.0;
-    std::size_t seg = 0;
-    for (int i = 1; i <= n && total > 0.0; ++i) {
-      const double target = total * i / (n + 1);
-      while (seg + 1 < path.size() &&
-             walked + problem.space.distance(path[seg], path[seg + 1]) < target) {
-        walked += problem.space.distance(path[seg], path[seg + 1]);
-        ++seg;
-      }
-      if (seg + 1 >= path.size())
-        break;
-      const double d = problem.space.distance(path[seg], path[seg + 1]);
-      snapshots.push_back(
-          problem.space.interpolate(path[seg], path[seg + 1], d > 0 ? (target - walked) / d : 0.0));
-    }
-    snapshots.push_back(path.back());
-  } else {
-    snapshots = {problem.start, problem.goal};
-  }
-  std::vector<std::vector<WorldTriangle>> objects;
-  for (const Config& q : snapshots) {
-    objects.push_back(world_triangles(problem.scene.object, q.pose()));
-    for (const auto& t : objects.back()) {
-      for (const auto& p : t.p) {
+  auto extend = [&](const std::vector<Item>& items) {
+    for (const auto& item : items) {
+      for (const auto& p : item.points) {
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
       }
     }
-  }
+  };
+  extend(obstacles);
+  for (const auto& o : objects)
+    extend(o);
 
-  const bool planar = problem.space.planar();
-  std::vector<View> views = {{0, 1, 2, "top view (x right, y up)"}};
-  if (!planar)
-    views.push_back({0, 2, 1, "side view (x right, z up)"});
+  std::vector<View> views = {{0, 1, 2, 1.0, "top view (x right, y up)"}};
+  if (!problem.space.planar())
+    views.push_back({0, 2, 1, -1.0, "side view (x right, z up)"});
   const double margin = 30.0;
-  double y = margin;
   const double width = options.panel_width;
+  double y = margin;
   for (View& view : views) {
     view.lo = {lo[view.u], lo[view.v]};
     view.hi = {hi[view.u], hi[view.v]};
@@ -130,32 +175,36 @@ std::string render_svg(const Problem& problem, const Path& path, const SvgOption
   svg.setf(std::ios::fixed);
   svg.precision(1);
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width + 2 * margin
-      << "\" height=\"" << y
-      << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" "
-         "fill=\"#ffffff\"/>\n";
-  svg << "<title>tandem: " << problem.name << "</title>\n";
+      << "\" height=\"" << y << "\" font-family=\"sans-serif\" font-size=\"13\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
+      << "<title>tandem: " << problem.name << "</title>\n";
   const Eigen::Vector3d light = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
 
-  auto draw = [&](const View& view, std::vector<WorldTriangle> tris, double opacity,
-                  const char* stroke) {
-    // Painter's order: farthest from the viewer first.
-    const double sign = view.depth == 1 ? -1.0 : 1.0;  // the side view looks along +y
-    std::sort(tris.begin(), tris.end(), [&](const WorldTriangle& a, const WorldTriangle& b) {
-      return sign * (a.p[0][view.depth] + a.p[1][view.depth] + a.p[2][view.depth]) <
-             sign * (b.p[0][view.depth] + b.p[1][view.depth] + b.p[2][view.depth]);
-    });
-    for (const auto& t : tris) {
-      const Eigen::Vector3d n = (t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]);
-      const double len = n.norm();
-      const double shade = len > 0 ? 0.55 + 0.45 * std::abs(n.dot(light)) / len : 1.0;
-      svg << "<polygon points=\"";
-      for (const auto& p : t.p) {
-        const Eigen::Vector2d s = view.project(p);
-        svg << s.x() << ',' << s.y() << ' ';
+  auto draw = [&](const View& view, std::vector<Item> items, double opacity,
+                  double stroke_opacity) {
+    std::sort(items.begin(), items.end(),
+              [&](const Item& a, const Item& b) { return view.nearness(a) < view.nearness(b); });
+    for (const auto& item : items) {
+      std::vector<Eigen::Vector2d> points;
+      for (const auto& p : item.points)
+        points.push_back(view.project(p));
+      double shade = 1.0;
+      if (item.convex) {
+        points = convex_hull(points);
+      } else {
+        const Eigen::Vector3d n =
+            (item.points[1] - item.points[0]).cross(item.points[2] - item.points[0]);
+        if (n.norm() > 0)
+          shade = 0.55 + 0.45 * std::abs(n.normalized().dot(light));
       }
-      svg << "\" fill=\"" << hex(t.color, shade) << "\" fill-opacity=\"" << opacity << "\"";
-      if (stroke)
-        svg << " stroke=\"" << stroke << "\" stroke-width=\"0.3\" stroke-opacity=\"0.5\"";
+      svg << "<polygon points=\"";
+      for (const auto& s : points)
+        svg << s.x() << ',' << s.y() << ' ';
+      svg << "\" fill=\"" << hex(item.color, shade) << "\" fill-opacity=\"" << opacity << "\"";
+      if (stroke_opacity > 0) {
+        svg << " stroke=\"" << hex(item.color, 0.5) << "\" stroke-width=\"1\" stroke-opacity=\""
+            << stroke_opacity << "\"";
+      }
       svg << "/>\n";
     }
   };
@@ -167,16 +216,11 @@ std::string render_svg(const Problem& problem, const Path& path, const SvgOption
     svg << "<rect x=\"" << std::min(a.x(), b.x()) << "\" y=\"" << std::min(a.y(), b.y())
         << "\" width=\"" << std::abs(b.x() - a.x()) << "\" height=\"" << std::abs(b.y() - a.y())
         << "\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>\n";
-    draw(view, scene, 0.85, nullptr);
+    // Translucent obstacles with outlines, so that what is behind or inside them shows.
+    draw(view, obstacles, 0.3, 0.9);
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      std::vector<WorldTriangle> tris = objects[i];
       const bool endpoint = i == 0 || i + 1 == objects.size();
-      const Color c =
-          i == 0 ? Color{0.1, 0.7, 0.2, 1}
-                 : (i + 1 == objects.size() ? Color{0.85, 0.1, 0.1, 1} : Color{0.95, 0.6, 0.1, 1});
-      for (auto& t : tris)
-        t.color = c;
-      draw(view, tris, endpoint ? 0.6 : 0.25, "#333");
+      draw(view, objects[i], endpoint ? 0.7 : 0.3, endpoint ? 0.9 : 0.5);
     }
     if (path.size() > 1) {
       svg << "<polyline fill=\"none\" stroke=\"#d02090\" stroke-width=\"2\" points=\"";

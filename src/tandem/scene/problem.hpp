@@ -16,6 +16,7 @@ namespace tandem {
 struct ProblemPlannerHints {
   std::optional<std::string> planner;   ///< "birrt" or "rrt"
   std::map<std::string, double> range;  ///< per planner name ("rrt", "birrt")
+  std::optional<std::string> extend;    ///< "classic" or "last-valid"
   std::optional<double> goal_bias;      ///< RRT's probability of sampling the goal
   std::optional<double> time_limit;     ///< seconds
   std::optional<std::uint64_t> seed;

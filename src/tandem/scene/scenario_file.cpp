@@ -446,6 +446,12 @@ Problem parse_scenario(std::string_view text, const std::string& source,
         p.fail(n, "goal_bias", "must be in [0, 1]");
       hints.goal_bias = b;
     }
+    if (auto e = p.optional_string("extend")) {
+      if (*e != "classic" && *e != "last-valid")
+        throw InputError(p.at(p.require("extend")),
+                         "planner.extend must be \"classic\" or \"last-valid\"");
+      hints.extend = *e;
+    }
     if (p.has("time_limit"))
       hints.time_limit = p.positive("time_limit");
     if (p.has("seed")) {
