@@ -1,6 +1,6 @@
 // OMPL reads tandem's path files: each line is loaded into an OMPL state by OMPL's own value layout
-// (ScopedState's index order: x y z qx qy qz qw for SE(3), x y yaw for SE(2)), and OMPL's PathGeometric
-// checks the path with its DiscreteMotionValidator at the same resolution.
+// (ScopedState's index order: x y z qx qy qz qw for SE(3), x y yaw for SE(2)), and OMPL's
+// PathGeometric checks the path with its DiscreteMotionValidator at the same resolution.
 
 #include <gtest/gtest.h>
 #include <ompl/base/ScopedState.h>
@@ -67,10 +67,12 @@ og::PathGeometric ompl_path(const ob::SpaceInformationPtr& si, const std::string
   std::string line;
   while (std::getline(in, line)) {
     const auto fields = split_whitespace(line);
-    if (fields.empty()) continue;
+    if (fields.empty())
+      continue;
     ob::ScopedState<> state(si->getStateSpace());
     EXPECT_EQ(fields.size(), si->getStateDimension() == 3 ? 3u : 7u);
-    for (std::size_t i = 0; i < fields.size(); ++i) state[static_cast<unsigned>(i)] = *parse_double(fields[i]);
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      state[static_cast<unsigned>(i)] = *parse_double(fields[i]);
     path.append(state.get());
   }
   return path;
@@ -109,8 +111,8 @@ TEST(OmplInterop, OmplRejectsAPathThroughAWall) {
 
 TEST(OmplInterop, PlanarPathsUseOmplsSE2Layout) {
   TANDEM_REQUIRE_SHARED_DATA();
-  const Problem problem =
-      load_problem((test::shared_dir() / "benchmarks" / "omplapp" / "2D" / "Maze_planar.cfg").string());
+  const Problem problem = load_problem(
+      (test::shared_dir() / "benchmarks" / "omplapp" / "2D" / "Maze_planar.cfg").string());
   CollisionChecker checker(problem.scene);
   MotionValidator validator(problem.space, checker);
   auto planner = make_planner("birrt", validator, problem.start, problem.goal, PlannerSettings{});
@@ -118,8 +120,8 @@ TEST(OmplInterop, PlanarPathsUseOmplsSE2Layout) {
   auto si = ompl_space(problem, validator);
   og::PathGeometric path = ompl_path(si, format_path(planner->solution(), problem.space));
   EXPECT_TRUE(path.check());
-  const auto* last =
-      path.getState(static_cast<unsigned>(path.getStateCount() - 1))->as<ob::SE2StateSpace::StateType>();
+  const auto* last = path.getState(static_cast<unsigned>(path.getStateCount() - 1))
+                         ->as<ob::SE2StateSpace::StateType>();
   EXPECT_NEAR(last->getYaw(), SE3Space::yaw(problem.goal.q), 1e-12);
 }
 

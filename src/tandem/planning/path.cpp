@@ -115,11 +115,18 @@ Path simplify_path(Path path, MotionValidator& validator, Rng& rng,
                    const SimplifyOptions& options) {
   if (path.size() > 2 && validator.check_motion(path.front(), path.back()))
     return {path.front(), path.back()};
-  reduce_vertices(path, validator, rng, options);
-  shortcut(path, validator, rng, options);
-  reduce_vertices(path, validator, rng, options);
-  // Drop repeated states (a shortcut may start exactly at a vertex).
-  path.erase(std::unique(path.begin(), path.end()), path.end());
+  double length = path_length(validator.space(), path);
+  for (int round = 0; round < options.max_rounds; ++round) {
+    reduce_vertices(path, validator, rng, options);
+    shortcut(path, validator, rng, options);
+    // Drop repeated states (a shortcut may start exactly at a vertex).
+    path.erase(std::unique(path.begin(), path.end()), path.end());
+    const double shorter = path_length(validator.space(), path);
+    const bool converged = shorter > (1.0 - options.min_gain) * length;
+    length = shorter;
+    if (converged)
+      break;
+  }
   return path;
 }
 

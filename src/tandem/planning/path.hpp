@@ -31,6 +31,9 @@ struct SimplifyOptions {
   /// Attempts of each pass, as a multiple of the path's size (OMPL's simplifier uses the size
   /// itself).
   double attempts_per_state = 2.0;
+  /// Rounds of both passes at most; a round that shortens the path by less than min_gain ends it.
+  int max_rounds = 8;
+  double min_gain = 0.01;
 };
 
 /// Shortens a valid path (the start and the goal stay): tries the direct motion, removes vertices
