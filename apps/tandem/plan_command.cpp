@@ -1,6 +1,9 @@
 // tandem plan: solve a problem with an automatic planner.
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -34,7 +37,25 @@ struct PlanArgs {
 
 constexpr double kDefaultTimeLimit = 60.0;
 
+/// Fails before planning, not after, when an output file cannot be written: no work is lost.
+void require_writable(const std::string& file) {
+  if (file.empty())
+    return;
+  const std::filesystem::path p = std::filesystem::absolute(file);
+  std::error_code ec;
+  if (std::filesystem::is_directory(p, ec))
+    throw InputError(file, "is a folder");
+  if (!std::filesystem::is_directory(p.parent_path(), ec)) {
+    throw InputError(file, "cannot be written: no folder " + p.parent_path().string());
+  }
+  if (access(p.parent_path().c_str(), W_OK) != 0) {
+    throw InputError(file, "cannot be written: the folder is not writable");
+  }
+}
+
 int run_plan(const PlanArgs& args) {
+  require_writable(args.out);
+  require_writable(args.svg);
   const Problem problem = load_problem(args.problem);
   const std::string planner_name = args.planner.value_or(problem.hints.planner.value_or("birrt"));
 

@@ -120,6 +120,14 @@ TEST(Cli, ImpossibleProblems) {
                    {"b.toml", "the goal", "outside the workspace bounds"});
 }
 
+TEST(Cli, UnwritableOutputsFailBeforePlanning) {
+  TempDir dir;
+  const auto problem = dir.write("w.toml", kWallScenario).string();
+  expect_bad_input({"plan", problem, "--out", (dir.path() / "no" / "p.path").string()},
+                   {"p.path", "cannot be written"});
+  expect_bad_input({"plan", problem, "--svg", dir.path().string()}, {"is a folder"});
+}
+
 TEST(Cli, MalformedPathFile) {
   TempDir dir;
   const auto problem = dir.write("w.toml", kWallScenario);

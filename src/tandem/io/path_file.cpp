@@ -91,13 +91,7 @@ Path parse_path(const std::string& text, const SE3Space& space, const std::strin
 }
 
 Path read_path_file(const std::filesystem::path& file, const SE3Space& space) {
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(file.string(), std::filesystem::exists(file) ? "cannot be opened for reading"
-                                                                  : "no such file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_path(text.str(), space, file.string());
+  return parse_path(read_text_file(file), space, file.string());
 }
 
 }  // namespace tandem

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <fstream>
+#include <iterator>
 
 #include "tandem/core/error.hpp"
 
@@ -40,6 +41,22 @@ std::optional<std::uint64_t> parse_uint(std::string_view s) {
   if (ec != std::errc() || ptr != t.data() + t.size())
     return std::nullopt;
   return v;
+}
+
+std::string read_text_file(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec))
+    throw InputError(name, "no such file");
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(name, "not a regular file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    throw InputError(name, "cannot be opened for reading");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad())
+    throw InputError(name, "read error");
+  return text;
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& text) {

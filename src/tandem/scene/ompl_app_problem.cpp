@@ -1,9 +1,9 @@
 #include "tandem/scene/ompl_app_problem.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "tandem/core/error.hpp"
 #include "tandem/io/text.hpp"
@@ -22,10 +22,7 @@ using Ini = std::map<std::string, std::map<std::string, IniValue>>;
 
 Ini read_ini(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(
-        name, std::filesystem::exists(file) ? "cannot be opened for reading" : "no such file");
+  std::istringstream in(read_text_file(file));
   Ini ini;
   std::string section;
   std::string raw;
@@ -59,8 +56,6 @@ Ini read_ini(const std::filesystem::path& file) {
     }
     slot[key] = IniValue{trim(s.substr(eq + 1)), line};
   }
-  if (in.bad())
-    throw InputError(name, "read error");
   return ini;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
+#include "tandem/io/text.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 #include "tandem/scene/urdf_loader.hpp"
 
@@ -469,14 +470,7 @@ Problem parse_scenario(std::string_view text, const std::string& source,
 }
 
 Problem load_scenario_file(const std::filesystem::path& file, const FileAccess& access) {
-  const std::string source = file.string();
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(
-        source, std::filesystem::exists(file) ? "cannot be opened for reading" : "no such file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_scenario(text.str(), source, file, access);
+  return parse_scenario(read_text_file(file), file.string(), file, access);
 }
 
 }  // namespace tandem

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
+#include "tandem/io/text.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 
 namespace tandem {
@@ -92,12 +93,7 @@ Geometry to_geometry(const urdf::Geometry& g, const std::string& source, const s
 
 Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAccess& access) {
   const std::string source = file.string();
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(
-        source, std::filesystem::exists(file) ? "cannot be opened for reading" : "no such file");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(file);
 
   urdf::ModelInterfaceSharedPtr model;
   {
@@ -106,7 +102,7 @@ Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAcces
     std::lock_guard<std::mutex> lock(mutex);
     CapturingHandler handler;
     console_bridge::useOutputHandler(&handler);
-    model = urdf::parseURDF(text.str());
+    model = urdf::parseURDF(text);
     console_bridge::restorePreviousOutputHandler();
     if (!model) {
       throw InputError(
