@@ -180,6 +180,14 @@ Command add_plan_command(CLI::App& app) {
   app.add_option("--svg", args->svg, "Draw the problem and the path into this SVG file");
   app.add_flag("--json", args->json, "Print one JSON object with the run's figures");
   app.add_flag("--no-simplify", args->no_simplify, "Keep the path as the planner found it");
+  app.footer(
+      "The path is simplified (shortcuts), checked as read back from its file, then written.\n"
+      "--json prints: problem, source, planner, status, solved, seed, range, extend, time_limit_s, "
+      "time_s,\niterations, nodes, edges, collision_checks, path_length, raw_path_length, "
+      "path_states, "
+      "simplify_time_s, out.\nExit 0 if solved; 1 if not solved within the time limit; 2 for bad "
+      "input "
+      "(including a start or\ngoal outside the bounds or in collision).");
   return [args] { return run_plan(*args); };
 }
 

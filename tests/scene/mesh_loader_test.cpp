@@ -81,7 +81,9 @@ TEST(MeshLoader, RejectsMissingFilesAndOtherFormats) {
 TEST(MeshLoader, RejectsMalformedFiles) {
   TempDir dir;
   expect_rejected(dir.write("garbage.dae", "<COLLADA><this is not xml"), "cannot read mesh");
-  expect_rejected(dir.write("garbage.stl", std::string("\x00\x01\x02 binary junk", 17)), "");
+  expect_rejected(dir.write("garbage.stl", std::string("\x00\x01\x02 binary junk",
+                                                       sizeof("\x00\x01\x02 binary junk") - 1)),
+                  "");
   expect_rejected(dir.write("bad.obj", "v 0 0 0\nf 1 2 3\n"), "");
 }
 

@@ -25,6 +25,6 @@ struct Extension {
 /// toward it; then the motion q_near -> q_new is validated as `mode` says and q_new (or the last
 /// valid configuration) is added with q_near as parent.
 Extension extend(Tree& tree, const Config& q_target, double range, MotionValidator& validator,
-                 ExtendMode mode);
+                 ExtendMode mode, NodeSource source = NodeSource::random);
 
 }  // namespace tandem

@@ -40,8 +40,37 @@ std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view to_string(NodeSource source) {
+  static constexpr std::string_view kNames[] = {"root", "random", "operator", "contact"};
+  return kNames[static_cast<std::size_t>(source)];
+}
+
+std::string_view to_string(IrrtSampling mode) {
+  static constexpr std::string_view kNames[] = {"mag", "path", "mag+cs", "path+cs"};
+  return kNames[static_cast<std::size_t>(mode)];
+}
+
+std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name) {
+  for (auto m :
+       {IrrtSampling::mag, IrrtSampling::path, IrrtSampling::mag_cs, IrrtSampling::path_cs}) {
+    if (to_string(m) == name)
+      return m;
+  }
+  return std::nullopt;
+}
+
+double contact_distance(const InteractionSettings& s, const SE3Space& space) {
+  return s.contact_distance > 0.0 ? s.contact_distance : 0.015 * space.translation_extent();
+}
+double contact_clearance(const InteractionSettings& s, const SE3Space& space) {
+  return s.contact_clearance > 0.0 ? s.contact_clearance : 0.1 * space.translation_step();
+}
+double sigma_translation(const InteractionSettings& s, const SE3Space& space) {
+  return s.sigma > 0.0 ? s.sigma : 0.02 * space.translation_extent();
+}
+
 Planner::Planner(MotionValidator& validator, const Config& start, const Config& goal,
-                 const PlannerSettings& settings)
+                 const PlannerSettings& settings, const Interaction* interaction)
     : validator_(validator),
       space_(validator.space()),
       start_(start),
@@ -49,18 +78,35 @@ Planner::Planner(MotionValidator& validator, const Config& start, const Config& 
       settings_(settings),
       range_(settings.range > 0.0 ? settings.range : validator.space().default_range()),
       rng_(settings.seed) {
+  if (interaction != nullptr) {
+    if (interaction->feed == nullptr)
+      throw std::invalid_argument("an Interaction needs an OperatorFeed");
+    interaction_ = *interaction;
+  }
   if (!(settings.goal_bias >= 0.0 && settings.goal_bias <= 1.0)) {
     throw std::invalid_argument("goal_bias must be in [0, 1]");
   }
 }
 
+const InteractionSettings& Planner::interaction_settings() {
+  return interaction_.parameters != nullptr ? interaction_.parameters->latest()
+                                            : settings_.interaction;
+}
+
 void Planner::update_counts() {
   stats_.nodes = 0;
   stats_.edges = 0;
+  stats_.nodes_by_source.fill(0);
   for (const Tree* t : trees()) {
     stats_.nodes += t->size();
     stats_.edges += t->size() - 1;
+    for (std::size_t s = 0; s < kNodeSources; ++s)
+      stats_.nodes_by_source[s] += t->by_source[s];
   }
+  stats_.operator_time_s =
+      interaction_.feed != nullptr ? interaction_.feed->operator_seconds() : 0.0;
+  stats_.operator_iterations = operator_iterations_;
+  stats_.contact_entries = contact_entries_;
   stats_.collision_checks = validator_.checks() - checks_at_start_;
   stats_.collision_time_s = validator_.check_seconds() - check_seconds_at_start_;
   stats_.nearest_time_s = nearest_seconds_;
@@ -121,9 +167,10 @@ PlannerStatus Planner::solve(const Termination& termination) {
 
 std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
                                       const Config& start, const Config& goal,
-                                      const PlannerSettings& settings) {
+                                      const PlannerSettings& settings,
+                                      const Interaction* interaction) {
   if (name == "birrt" || name == "rrtconnect")
-    return std::make_unique<RRTConnect>(validator, start, goal, settings);
+    return std::make_unique<RRTConnect>(validator, start, goal, settings, interaction);
   if (name == "rrt")
     return std::make_unique<RRT>(validator, start, goal, settings);
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");

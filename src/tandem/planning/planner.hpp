@@ -10,6 +10,7 @@
 // from any thread. stats(), trees() and solution() may be read on the planner thread, or by others
 // only while the planner is not stepping.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <limits>
@@ -21,6 +22,7 @@
 
 #include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/rng.hpp"
+#include "tandem/planning/interaction.hpp"
 #include "tandem/planning/tree.hpp"
 
 namespace tandem {
@@ -51,14 +53,19 @@ std::optional<ExtendMode> parse_extend_mode(std::string_view name);
 /// Settings of the automatic planners, with their defaults. Declared once; the CLI, the benchmark
 /// and (later) the viewer read them from here.
 struct PlannerSettings {
-  double range =
-      0.0;  ///< longest motion added in one extension; <= 0 means 0.2 x max extent (OMPL)
-  double goal_bias = 0.05;  ///< RRT only: probability of extending toward the goal, in [0, 1]
-  std::uint64_t seed = 1;   ///< the run's only source of randomness
+  /// Longest motion added in one extension; <= 0 means 0.2 x the space's maximum extent (OMPL).
+  double range = 0.0;
+  /// RRT only: probability of extending toward the goal, in [0, 1].
+  double goal_bias = 0.05;
+  /// The run's only source of randomness.
+  std::uint64_t seed = 1;
   ExtendMode extend = ExtendMode::classic;
-  std::string nearest_neighbors = "kdtree";  ///< "kdtree" or "linear"
-  bool profile =
-      false;  ///< measure the time spent in collision checks and nearest-neighbour queries
+  /// "kdtree" or "linear".
+  std::string nearest_neighbors = "kdtree";
+  /// Measure the time spent in collision checks and nearest-neighbour queries.
+  bool profile = false;
+  /// The interactive planners' tunables (used when the planner is given an Interaction).
+  InteractionSettings interaction;
 };
 
 struct PlannerStats {
@@ -67,8 +74,16 @@ struct PlannerStats {
   std::size_t nodes = 0;               ///< in all trees, roots included
   std::size_t edges = 0;               ///< nodes minus roots
   std::uint64_t collision_checks = 0;  ///< configuration checks by this planner's validator
-  double collision_time_s = 0.0;       ///< time in collision queries (with settings.profile)
-  double nearest_time_s = 0.0;  ///< time in nearest-neighbour queries (with settings.profile)
+  /// Time in collision queries and in nearest-neighbour queries (with settings.profile).
+  double collision_time_s = 0.0;
+  double nearest_time_s = 0.0;
+  /// Nodes per NodeSource (root, random, operator, contact).
+  std::array<std::size_t, kNodeSources> nodes_by_source{};
+  /// Time the planner thread spent computing operator states (virtual-time feeds).
+  double operator_time_s = 0.0;
+  /// Iterations in which the operator had authority, and how often contact mode was entered.
+  std::uint64_t operator_iterations = 0;
+  std::uint64_t contact_entries = 0;
 };
 
 struct Termination {
@@ -79,7 +94,7 @@ struct Termination {
 class Planner {
  public:
   Planner(MotionValidator& validator, const Config& start, const Config& goal,
-          const PlannerSettings& settings);
+          const PlannerSettings& settings, const Interaction* interaction = nullptr);
   virtual ~Planner() = default;
   Planner(const Planner&) = delete;
   Planner& operator=(const Planner&) = delete;
@@ -112,8 +127,12 @@ class Planner {
   /// Subclasses call this for each tree they own, after constructing it.
   void attach(Tree& tree);
 
+  /// The interaction settings in force this iteration (live, if the Interaction has parameters).
+  const InteractionSettings& interaction_settings();
+
   MotionValidator& validator_;
   const SE3Space& space_;
+  Interaction interaction_;  ///< feed == nullptr: not interactive
   Config start_, goal_;
   PlannerSettings settings_;
   double range_;
@@ -128,12 +147,20 @@ class Planner {
   double nearest_seconds_ = 0.0;
   PlannerStats stats_;
   std::atomic<bool> interrupt_requested_{false};
+
+ protected:
+  /// Interactive planners count these; update_counts() publishes them in stats().
+  std::uint64_t operator_iterations_ = 0;
+  std::uint64_t contact_entries_ = 0;
 };
 
 /// "birrt" (RRT-Connect) or "rrt". Throws std::invalid_argument for an unknown name.
+/// With an Interaction, "birrt" becomes the interactive BiRRT (authority sharing, and contact
+/// sampling if enabled) and "irrt" is available (it needs one).
 std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
                                       const Config& start, const Config& goal,
-                                      const PlannerSettings& settings);
+                                      const PlannerSettings& settings,
+                                      const Interaction* interaction = nullptr);
 
 /// Names make_planner() accepts.
 const std::vector<std::string>& planner_names();

@@ -3,6 +3,7 @@
 //
 // Not movable: the index refers to `nodes` in place.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string_view>
@@ -13,20 +14,29 @@
 
 namespace tandem {
 
+/// Where a node's target came from: the tree's root, a uniform sample, the operator (q_device, or a
+/// sample around it), or contact sampling. Nodes added while connecting carry the source of the
+/// node they connect to.
+enum class NodeSource : std::uint8_t { root, random, operator_, contact };
+inline constexpr std::size_t kNodeSources = 4;
+std::string_view to_string(NodeSource source);
+
 struct Tree {
   static constexpr NodeId kNoParent = UINT32_MAX;
 
   Tree(const SE3Space& space, std::string_view nn_kind, const Config& root)
       : nn(make_nearest_neighbors(nn_kind, space, nodes)) {
-    add(root, kNoParent);
+    add(root, kNoParent, NodeSource::root);
   }
   Tree(const Tree&) = delete;
   Tree& operator=(const Tree&) = delete;
 
-  NodeId add(const Config& q, NodeId parent_id) {
+  NodeId add(const Config& q, NodeId parent_id, NodeSource from = NodeSource::random) {
     const auto id = static_cast<NodeId>(nodes.size());
     nodes.push_back(q);
     parent.push_back(parent_id);
+    source.push_back(from);
+    ++by_source[static_cast<std::size_t>(from)];
     nn->add(id);
     return id;
   }
@@ -52,6 +62,8 @@ struct Tree {
 
   std::vector<Config> nodes;
   std::vector<NodeId> parent;  ///< kNoParent for the root
+  std::vector<NodeSource> source;
+  std::array<std::size_t, kNodeSources> by_source{};  ///< node counts per source
   std::unique_ptr<NearestNeighbors> nn;
   double* profile_seconds = nullptr;  ///< where nearest() adds its time, if profiling
 };

@@ -1,0 +1,37 @@
+#include "tandem/interaction/operator_feed.hpp"
+
+#include <stdexcept>
+
+namespace tandem {
+
+VirtualTimeFeed::VirtualTimeFeed(OperatorModel model, std::uint64_t period)
+    : model_(std::move(model)), period_(period) {
+  if (period_ == 0) throw std::invalid_argument("the operator's period must be at least one iteration");
+}
+
+const OperatorState* VirtualTimeFeed::at(std::uint64_t iteration) {
+  const std::uint64_t tick = iteration - iteration % period_;
+  if (!have_ || current_.time != static_cast<double>(tick)) {
+    const Stopwatch watch;
+    current_ = model_.compute(static_cast<double>(tick), tick / period_ + 1);
+    operator_seconds_ += watch.seconds();
+    have_ = true;
+  }
+  return &current_;
+}
+
+const OperatorState* LiveFeed::at(std::uint64_t iteration) {
+  const OperatorState* s = channel_.latest();
+  if (s != nullptr && s->sequence != last_sequence_) {
+    last_sequence_ = s->sequence;
+    record_.push_back({iteration, *s});
+  }
+  return s;
+}
+
+const OperatorState* ReplayFeed::at(std::uint64_t iteration) {
+  while (next_ < record_.size() && record_[next_].iteration <= iteration) current_ = &record_[next_++].state;
+  return current_;
+}
+
+}  // namespace tandem

@@ -1,0 +1,41 @@
+#pragma once
+// The operator thread of the papers: it runs an OperatorModel at a fixed wall-clock rate and publishes
+// each state into a LatestValue channel for the planner (and reads back the planner's guidance force).
+//
+// Threading: the constructor starts the thread; stop() (or the destructor) ends and joins it. The
+// model is used only by the thread. published() and achieved_rate() may be read from any thread.
+
+#include <atomic>
+#include <thread>
+
+#include "tandem/interaction/latest_value.hpp"
+#include "tandem/interaction/operator_model.hpp"
+
+namespace tandem {
+
+class OperatorThread {
+ public:
+  /// Publishes compute(t) with t = seconds since start, `rate_hz` times a second (at most).
+  OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel, double rate_hz);
+  ~OperatorThread();
+  OperatorThread(const OperatorThread&) = delete;
+  OperatorThread& operator=(const OperatorThread&) = delete;
+
+  void stop();
+  std::uint64_t published() const { return published_.load(std::memory_order_relaxed); }
+  /// States per second actually published (the loop's rate, nearest-obstacle query included).
+  double achieved_rate() const;
+
+ private:
+  void run();
+
+  OperatorModel model_;
+  LatestValue<OperatorState>& channel_;
+  double period_s_;
+  std::atomic<bool> stop_{false};
+  std::atomic<std::uint64_t> published_{0};
+  std::atomic<double> elapsed_s_{0.0};
+  std::thread thread_;
+};
+
+}  // namespace tandem
