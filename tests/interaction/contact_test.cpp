@@ -1,8 +1,8 @@
 // Find_Local_Frame and Contact_Shooter (Blin et al. 2016, Algorithm 2).
 
-#include <numbers>
-
 #include <gtest/gtest.h>
+
+#include <numbers>
 
 #include "support/test_support.hpp"
 #include "tandem/interaction/contact_frame.hpp"
@@ -14,7 +14,8 @@ namespace {
 TEST(GramSchmidt, GivesARightHandedOrthonormalFrameAroundN) {
   Rng rng(1);
   for (int i = 0; i < 1000; ++i) {
-    const Eigen::Vector3d n = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
+    const Eigen::Vector3d n =
+        Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
     const Eigen::Matrix3d R = gram_schmidt(n);
     ASSERT_TRUE((R.transpose() * R).isIdentity(1e-12));
     ASSERT_NEAR(R.determinant(), 1.0, 1e-12);
@@ -35,7 +36,13 @@ struct FloorScene {
     Config start, goal;
     start.t = {-2, 0, 1};
     goal.t = {1, 0, 1};
-    return Problem{"floor", "test", std::move(s), SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}), start, goal, {}};
+    return Problem{"floor",
+                   "test",
+                   std::move(s),
+                   SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
+                   start,
+                   goal,
+                   {}};
   }
 };
 
@@ -57,7 +64,8 @@ TEST(ContactFrame, PointsFromTheObstacleToTheObject) {
   EXPECT_NEAR(frame->distance, 0.05, 1e-9);
   EXPECT_NEAR(frame->delta, -0.2, 1e-9);  // the nearest point is 0.2 below the centre
   EXPECT_TRUE(frame->P_c.isApprox(q.t));
-  EXPECT_FALSE(find_local_frame(checker.nearest_obstacle(at(-1, 0, 0.1)), at(-1, 0, 0.1)));  // in the floor
+  EXPECT_FALSE(
+      find_local_frame(checker.nearest_obstacle(at(-1, 0, 0.1)), at(-1, 0, 0.1)));  // in the floor
 }
 
 TEST(ContactSampler, SamplesTouchTheObstacleWithTheOperatorsOrientation) {

@@ -1,9 +1,9 @@
 // The interactive BiRRT (Blin et al. 2016, Algorithms 1-3) driven by simulated operators.
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <thread>
-
-#include <gtest/gtest.h>
 
 #include "support/test_support.hpp"
 #include "tandem/interaction/operator_thread.hpp"
@@ -14,8 +14,8 @@
 namespace tandem {
 namespace {
 
-/// The wall with a gap, start and goal far from the gap (the straight line between them is blocked),
-/// and a guide through the gap.
+/// The wall with a gap, start and goal far from the gap (the straight line between them is
+/// blocked), and a guide through the gap.
 Problem detour_problem() {
   Problem p = test::wall_with_gap_problem();
   p.start.t = {-2, 2, 0};
@@ -35,15 +35,16 @@ struct Fixture {
     keys[1].t = {-0.8, 0.0, 0.0};
     keys[2].t = {0.8, 0.0, 0.0};
     keys[3] = problem.goal;
-    return std::make_shared<GuideFollower>(problem.space, keys,
-                                           operator_profile(profile, problem.space, OperatorClock::ticks), seed);
+    return std::make_shared<GuideFollower>(
+        problem.space, keys, operator_profile(profile, problem.space, OperatorClock::ticks), seed);
   }
 };
 
 /// All nodes of all trees, in order.
 std::vector<Config> all_nodes(const Planner& p) {
   std::vector<Config> out;
-  for (const Tree* t : p.trees()) out.insert(out.end(), t->nodes.begin(), t->nodes.end());
+  for (const Tree* t : p.trees())
+    out.insert(out.end(), t->nodes.begin(), t->nodes.end());
   return out;
 }
 
@@ -59,7 +60,8 @@ TEST(InteractiveBiRRT, AtAlphaOneIsExactlyBiRRT) {
 
   VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source()));
   const Interaction interaction{&feed};
-  auto interactive = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto interactive =
+      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   ASSERT_EQ(interactive->solve(Termination{}), PlannerStatus::solved);
   EXPECT_EQ(all_nodes(*plain), all_nodes(*interactive));
   EXPECT_EQ(plain->solution(), interactive->solution());
@@ -74,7 +76,8 @@ TEST(InteractiveBiRRT, TheOperatorAloneGrowsTheTreeAlongTheGuide) {
   const auto source = f.operator_source();
   VirtualTimeFeed feed(OperatorModel(f.checker, source));
   const Interaction interaction{&feed};
-  auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner =
+      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   Termination t;
   t.max_iterations = 200000;
   ASSERT_EQ(planner->solve(t), PlannerStatus::solved);
@@ -85,14 +88,15 @@ TEST(InteractiveBiRRT, TheOperatorAloneGrowsTheTreeAlongTheGuide) {
   // The path passes the gap where the operator did.
   const PathCheck check = check_path(planner->solution(), f.validator);
   EXPECT_TRUE(check.valid) << check.describe();
-  // The trees grew where the operator went: toward the gap and through it (once through, the trees may
-  // meet before the operator reaches the goal).
+  // The trees grew where the operator went: toward the gap and through it (once through, the trees
+  // may meet before the operator reaches the goal).
   const auto* guide = dynamic_cast<const GuideFollower*>(source.get());
   for (double u : {0.25, 0.5}) {
     const Eigen::Vector3d p = guide->guide_pose(u * guide->guide_length()).t;
     double nearest = 1e9;
     for (const Tree* tree : planner->trees()) {
-      for (const Config& q : tree->nodes) nearest = std::min(nearest, (q.t - p).norm());
+      for (const Config& q : tree->nodes)
+        nearest = std::min(nearest, (q.t - p).norm());
     }
     EXPECT_LT(nearest, 0.2) << "at " << p.transpose();
   }
@@ -108,7 +112,8 @@ TEST(InteractiveBiRRT, SameSeedSameOperatorSameTree) {
     settings.interaction.contact = true;
     VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source("inexperienced", 3)));
     const Interaction interaction{&feed};
-    auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner =
+        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
     Termination t;
     t.max_iterations = 3000;
     planner->solve(t);
@@ -131,10 +136,12 @@ TEST(InteractiveBiRRT, ContactSamplingSlidesOnTheObstacle) {
   keys[1].t = {-0.6, 2.0, 0.0};  // the bar's end 5 cm from the wall's face
   keys[2].t = {-0.6, 0.0, 0.0};
   const auto source = std::make_shared<GuideFollower>(
-      f.problem.space, keys, operator_profile("experienced", f.problem.space, OperatorClock::ticks), 2);
+      f.problem.space, keys, operator_profile("experienced", f.problem.space, OperatorClock::ticks),
+      2);
   VirtualTimeFeed feed(OperatorModel(f.checker, source));
   const Interaction interaction{&feed};
-  auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner =
+      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   Termination t;
   t.max_iterations = 6000;
   planner->solve(t);
@@ -147,7 +154,8 @@ TEST(InteractiveBiRRT, ContactSamplingSlidesOnTheObstacle) {
   std::size_t near_wall = 0;
   for (const Tree* tree : planner->trees()) {
     for (std::size_t i = 0; i < tree->size(); ++i) {
-      if (tree->source[i] != NodeSource::contact) continue;
+      if (tree->source[i] != NodeSource::contact)
+        continue;
       near_wall += checker.nearest_obstacle(tree->nodes[i]).distance <= 0.2;
     }
   }
@@ -163,11 +171,13 @@ TEST(InteractiveBiRRT, ParametersChangeWhilePlanning) {
   InteractionParameters parameters(operator_only);
   VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source()));
   const Interaction interaction{&feed, &parameters};
-  auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner =
+      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   Termination t;
   t.max_iterations = 300;
   planner->solve(t);
-  const auto random_before = planner->stats().nodes_by_source[static_cast<std::size_t>(NodeSource::random)];
+  const auto random_before =
+      planner->stats().nodes_by_source[static_cast<std::size_t>(NodeSource::random)];
   const auto operator_before = planner->stats().operator_iterations;
   EXPECT_EQ(random_before, 0u);
   EXPECT_EQ(operator_before, 300u);
@@ -179,8 +189,8 @@ TEST(InteractiveBiRRT, ParametersChangeWhilePlanning) {
 }
 
 TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
-  // An operator thread publishes on the wall clock while the planner runs; the feed's record of what
-  // the planner saw replays the run exactly.
+  // An operator thread publishes on the wall clock while the planner runs; the feed's record of
+  // what the planner saw replays the run exactly.
   Fixture f;
   PlannerSettings settings;
   settings.seed = 9;
@@ -189,16 +199,19 @@ TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
   settings.interaction.contact = true;
   std::vector<Config> keys = {f.problem.start, f.problem.goal};
   const auto source = std::make_shared<GuideFollower>(
-      f.problem.space, keys, operator_profile("experienced", f.problem.space, OperatorClock::seconds), 1);
+      f.problem.space, keys,
+      operator_profile("experienced", f.problem.space, OperatorClock::seconds), 1);
   LatestValue<OperatorState> channel;
   std::vector<FeedRecord> record;
   std::vector<Config> live_nodes;
   {
     OperatorThread thread(OperatorModel(f.checker, source), channel, 2000.0);
-    while (thread.published() < 5) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    while (thread.published() < 5)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     LiveFeed feed(channel);
     const Interaction interaction{&feed};
-    auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner =
+        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
     Termination t;
     t.max_iterations = 4000;
     planner->solve(t);
@@ -210,7 +223,8 @@ TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
   ASSERT_FALSE(record.empty());
   ReplayFeed replay(record);
   const Interaction interaction{&replay};
-  auto planner = make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner =
+      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   Termination t;
   t.max_iterations = 4000;
   planner->solve(t);

@@ -1,9 +1,9 @@
 #include "tandem/interaction/latest_value.hpp"
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <thread>
-
-#include <gtest/gtest.h>
 
 namespace tandem {
 namespace {
@@ -41,10 +41,13 @@ TEST(LatestValue, HandsOverWholeValuesBetweenThreadsWithoutWaiting) {
   while (last < kCount) {
     const Payload* p = channel.latest();
     ++reads;
-    if (p == nullptr) continue;
-    for (std::uint64_t c : p->copies) ASSERT_EQ(c, p->sequence);
+    if (p == nullptr)
+      continue;
+    for (std::uint64_t c : p->copies)
+      ASSERT_EQ(c, p->sequence);
     ASSERT_GE(p->sequence, last);  // never older than what was seen
-    if (p->sequence != last) ++changes;
+    if (p->sequence != last)
+      ++changes;
     last = p->sequence;
   }
   writer.join();

@@ -32,7 +32,8 @@ TEST(GuideFollower, WalksTheGuideFromStartToEnd) {
   const GuideFollower op(space(), guide(), profile, 1);
   EXPECT_NEAR(op.end_time(), op.guide_length() / profile.speed, 1e-6);  // no pauses
   EXPECT_LT((op.read(0).q_device.t - guide()[0].t).norm(), 3 * profile.tremor_translation);
-  EXPECT_LT((op.read(op.end_time() + 100).q_device.t - guide()[2].t).norm(), 3 * profile.tremor_translation);
+  EXPECT_LT((op.read(op.end_time() + 100).q_device.t - guide()[2].t).norm(),
+            3 * profile.tremor_translation);
   // Halfway in time is halfway along the guide.
   EXPECT_NEAR(op.progress(op.end_time() / 2), op.guide_length() / 2, 1e-9);
   // Its velocity follows the guide.
@@ -81,15 +82,19 @@ TEST(GuideFollower, InexperiencedOperatorsAreSlowNoisyAndHesitate) {
 TEST(GuideFollower, StaysInTheBounds) {
   std::vector<Config> k = guide();
   k[1].t = {0, 4.99, 1.99};
-  const GuideFollower op(space(), k, operator_profile("inexperienced", space(), OperatorClock::ticks), 2);
-  for (double t = 0; t < op.end_time(); t += 50.0) ASSERT_TRUE(space().satisfies_bounds(op.read(t).q_device));
+  const GuideFollower op(space(), k,
+                         operator_profile("inexperienced", space(), OperatorClock::ticks), 2);
+  for (double t = 0; t < op.end_time(); t += 50.0)
+    ASSERT_TRUE(space().satisfies_bounds(op.read(t).q_device));
 }
 
 TEST(Trace, RoundTripsExactly) {
   Trace trace;
   trace.clock = OperatorClock::seconds;
   Rng rng(4);
-  for (int i = 0; i < 50; ++i) trace.samples.push_back({0.01 * i, space().sample_uniform(rng), static_cast<std::uint32_t>(i % 3)});
+  for (int i = 0; i < 50; ++i)
+    trace.samples.push_back(
+        {0.01 * i, space().sample_uniform(rng), static_cast<std::uint32_t>(i % 3)});
   const Trace back = parse_trace(format_trace(trace), "t");
   EXPECT_EQ(back.clock, OperatorClock::seconds);
   ASSERT_EQ(back.samples.size(), trace.samples.size());
@@ -128,14 +133,17 @@ std::string trace_error(const std::string& text) {
 TEST(Trace, ReportsMalformedFiles) {
   const std::string head = "# tandem operator trace 1\n# clock: ticks\n";
   EXPECT_THAT(trace_error("0 0 0 0 0 0 0 1 0\n"), HasSubstr("not a tandem operator trace"));
-  EXPECT_THAT(trace_error("# tandem operator trace 1\n0 0 0 0 0 0 0 1 0\n"), HasSubstr("'# clock:' line must come"));
+  EXPECT_THAT(trace_error("# tandem operator trace 1\n0 0 0 0 0 0 0 1 0\n"),
+              HasSubstr("'# clock:' line must come"));
   EXPECT_THAT(trace_error(head + "0 0 0 0 0 0 0 1\n"), HasSubstr("bad.trace:3: expected 9 fields"));
   EXPECT_THAT(trace_error(head + "0 0 x 0 0 0 0 1 0\n"), HasSubstr("'x' is not a finite number"));
   EXPECT_THAT(trace_error(head + "0 0 0 0 0 0 0 0 0\n"), HasSubstr("the quaternion is zero"));
-  EXPECT_THAT(trace_error(head + "5 0 0 0 0 0 0 1 0\n4 0 0 0 0 0 0 1 0\n"), HasSubstr("bad.trace:4: time goes backwards"));
+  EXPECT_THAT(trace_error(head + "5 0 0 0 0 0 0 1 0\n4 0 0 0 0 0 0 1 0\n"),
+              HasSubstr("bad.trace:4: time goes backwards"));
   EXPECT_THAT(trace_error(head + "0 0 0 0 0 0 0 1 -1\n"), HasSubstr("buttons"));
   EXPECT_THAT(trace_error(head), HasSubstr("no samples"));
-  EXPECT_THAT(trace_error("# tandem operator trace 1\n# clock: hours\n"), HasSubstr("unknown clock 'hours'"));
+  EXPECT_THAT(trace_error("# tandem operator trace 1\n# clock: hours\n"),
+              HasSubstr("unknown clock 'hours'"));
 }
 
 }  // namespace

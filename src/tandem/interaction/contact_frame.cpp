@@ -1,8 +1,7 @@
 #include "tandem/interaction/contact_frame.hpp"
 
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace tandem {
 
@@ -17,12 +16,15 @@ Eigen::Matrix3d gram_schmidt(const Eigen::Vector3d& n) {
   return R;
 }
 
-std::optional<ContactFrame> find_local_frame(const NearestObstacle& nearest, const Config& q_device) {
-  if (nearest.in_collision || !std::isfinite(nearest.distance)) return std::nullopt;
+std::optional<ContactFrame> find_local_frame(const NearestObstacle& nearest,
+                                             const Config& q_device) {
+  if (nearest.in_collision || !std::isfinite(nearest.distance))
+    return std::nullopt;
   const Eigen::Vector3d d = nearest.point_on_object - nearest.point_on_obstacle;
   const double length = d.norm();
   // Below this the points' difference is rounding noise, not a direction.
-  if (!(length > 1e-12)) return std::nullopt;
+  if (!(length > 1e-12))
+    return std::nullopt;
   ContactFrame f;
   f.P_o = nearest.point_on_obstacle;
   f.P_n = nearest.point_on_object;

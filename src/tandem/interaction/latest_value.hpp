@@ -8,8 +8,8 @@
 //
 // Threading: exactly one thread calls publish() and exactly one thread calls latest() (they may be
 // different threads, and either may change over time only with external synchronisation). The three
-// slots are handed over through one atomic index with acquire/release ordering, which is what makes a
-// published value's contents visible to the reader (and keeps ThreadSanitizer quiet without
+// slots are handed over through one atomic index with acquire/release ordering, which is what makes
+// a published value's contents visible to the reader (and keeps ThreadSanitizer quiet without
 // suppressions).
 
 #include <array>
@@ -33,8 +33,8 @@ class LatestValue {
     back_ = previous & kIndex;
   }
 
-  /// Reader thread: the latest value published, or nullptr before the first. The pointer stays valid
-  /// (and its value unchanged) until this reader's next call.
+  /// Reader thread: the latest value published, or nullptr before the first. The pointer stays
+  /// valid (and its value unchanged) until this reader's next call.
   const T* latest() {
     if ((middle_.load(std::memory_order_relaxed) & kFresh) != 0) {
       const std::uint8_t previous = middle_.exchange(front_, std::memory_order_acq_rel);
@@ -49,10 +49,11 @@ class LatestValue {
   static constexpr std::uint8_t kFresh = 4;
 
   std::array<T, 3> slots_{};
-  std::atomic<std::uint8_t> middle_{1};  // slot index, plus kFresh when the writer put a new value there
-  std::uint8_t back_ = 0;                // writer's slot
-  std::uint8_t front_ = 2;               // reader's slot
-  bool seen_ = false;                    // reader: something was published
+  std::atomic<std::uint8_t> middle_{
+      1};                   // slot index, plus kFresh when the writer put a new value there
+  std::uint8_t back_ = 0;   // writer's slot
+  std::uint8_t front_ = 2;  // reader's slot
+  bool seen_ = false;       // reader: something was published
 };
 
 }  // namespace tandem

@@ -6,7 +6,8 @@ namespace tandem {
 
 VirtualTimeFeed::VirtualTimeFeed(OperatorModel model, std::uint64_t period)
     : model_(std::move(model)), period_(period) {
-  if (period_ == 0) throw std::invalid_argument("the operator's period must be at least one iteration");
+  if (period_ == 0)
+    throw std::invalid_argument("the operator's period must be at least one iteration");
 }
 
 const OperatorState* VirtualTimeFeed::at(std::uint64_t iteration) {
@@ -30,7 +31,8 @@ const OperatorState* LiveFeed::at(std::uint64_t iteration) {
 }
 
 const OperatorState* ReplayFeed::at(std::uint64_t iteration) {
-  while (next_ < record_.size() && record_[next_].iteration <= iteration) current_ = &record_[next_++].state;
+  while (next_ < record_.size() && record_[next_].iteration <= iteration)
+    current_ = &record_[next_++].state;
   return current_;
 }
 

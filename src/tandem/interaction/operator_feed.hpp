@@ -2,12 +2,13 @@
 // How the planner thread gets the operator's state, without ever blocking.
 //
 // - VirtualTimeFeed: deterministic. Operator time is counted in planner iterations; the operator's
-//   state changes every `period` iterations and is a pure function of that time, computed on the planner
-//   thread when the planner first asks for it (its cost is reported as operator_seconds). The same seed
-//   and source give the same tree.
-// - LiveFeed: the latest state an OperatorThread published (wall-clock). It records, for each iteration
-//   at which the planner saw a new state, that state: with the planner's seed, this record replays the
-//   run exactly.
+//   state changes every `period` iterations and is a pure function of that time, computed on the
+//   planner thread when the planner first asks for it (its cost is reported as operator_seconds).
+//   The same seed and source give the same tree.
+// - LiveFeed: the latest state an OperatorThread published (wall-clock). It records, for each
+// iteration
+//   at which the planner saw a new state, that state: with the planner's seed, this record replays
+//   the run exactly.
 //
 // Threading: at() is called by the planner thread only.
 

@@ -2,7 +2,8 @@
 
 namespace tandem {
 
-OperatorModel::OperatorModel(const CollisionChecker& checker, std::shared_ptr<const OperatorSource> source)
+OperatorModel::OperatorModel(const CollisionChecker& checker,
+                             std::shared_ptr<const OperatorSource> source)
     : checker_(checker.clone()), source_(std::move(source)) {}
 
 OperatorState OperatorModel::compute(double t, std::uint64_t sequence) {

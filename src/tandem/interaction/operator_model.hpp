@@ -3,10 +3,11 @@
 // find the nearest obstacle (FCL distance: P_o, P_n, which obstacle), and compute the contact frame
 // (n, delta, R by Gram-Schmidt).
 //
-// compute(t) is a pure function of t (the source is), so the state of any instant can be computed on
-// any thread with the same result.
+// compute(t) is a pure function of t (the source is), so the state of any instant can be computed
+// on any thread with the same result.
 //
-// Threading: not thread-safe (it owns a CollisionChecker); one model per thread. clone() gives another.
+// Threading: not thread-safe (it owns a CollisionChecker); one model per thread. clone() gives
+// another.
 
 #include <memory>
 

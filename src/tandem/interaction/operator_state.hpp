@@ -1,14 +1,14 @@
 #pragma once
 // What the operator thread publishes for the planner: the papers' q_device and what the human loop
 // computes from it (Blin et al. 2016, section IV-A: "reading the interactive device data and
-// integrating positions ... cycling through obstacles to find the nearest one ... computing R and δ").
+// integrating positions ... cycling through obstacles to find the nearest one ... computing R and
+// δ").
 //
 // A value type; it crosses threads by copy (see LatestValue).
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
-
-#include <Eigen/Core>
 
 #include "tandem/collision/collision_checker.hpp"
 #include "tandem/interaction/contact_frame.hpp"

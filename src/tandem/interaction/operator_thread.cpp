@@ -6,16 +6,20 @@
 
 namespace tandem {
 
-OperatorThread::OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel, double rate_hz)
+OperatorThread::OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel,
+                               double rate_hz)
     : model_(std::move(model)), channel_(channel), period_s_(rate_hz > 0.0 ? 1.0 / rate_hz : 0.0) {
   thread_ = std::thread([this] { run(); });
 }
 
-OperatorThread::~OperatorThread() { stop(); }
+OperatorThread::~OperatorThread() {
+  stop();
+}
 
 void OperatorThread::stop() {
   stop_.store(true, std::memory_order_relaxed);
-  if (thread_.joinable()) thread_.join();
+  if (thread_.joinable())
+    thread_.join();
 }
 
 double OperatorThread::achieved_rate() const {

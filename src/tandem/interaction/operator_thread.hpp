@@ -1,6 +1,7 @@
 #pragma once
-// The operator thread of the papers: it runs an OperatorModel at a fixed wall-clock rate and publishes
-// each state into a LatestValue channel for the planner (and reads back the planner's guidance force).
+// The operator thread of the papers: it runs an OperatorModel at a fixed wall-clock rate and
+// publishes each state into a LatestValue channel for the planner (and reads back the planner's
+// guidance force).
 //
 // Threading: the constructor starts the thread; stop() (or the destructor) ends and joins it. The
 // model is used only by the thread. published() and achieved_rate() may be read from any thread.

@@ -1,11 +1,13 @@
 #pragma once
-// A simulated operator that follows a guide: the 2011 paper's simulated user, "incrementing the user's
-// position by a step epsilon along a predefined path" (section VII), with tremor and hesitation.
+// A simulated operator that follows a guide: the 2011 paper's simulated user, "incrementing the
+// user's position by a step epsilon along a predefined path" (section VII), with tremor and
+// hesitation.
 //
 // The guide is a handful of keyframes placed by hand in the scene's file; it is coarse (it may pass
-// through obstacles, as a person's rough gesture does) and knows nothing of any planner's output. The
-// operator moves along the piecewise geodesic through the keyframes at the profile's speed; pauses and
-// back-ups are drawn once, at construction, from the seed, so read(t) is a pure function of t.
+// through obstacles, as a person's rough gesture does) and knows nothing of any planner's output.
+// The operator moves along the piecewise geodesic through the keyframes at the profile's speed;
+// pauses and back-ups are drawn once, at construction, from the seed, so read(t) is a pure function
+// of t.
 
 #include <cstdint>
 #include <vector>
@@ -19,7 +21,8 @@ namespace tandem {
 class GuideFollower final : public OperatorSource {
  public:
   /// Throws std::invalid_argument for fewer than one keyframe.
-  GuideFollower(const SE3Space& space, std::vector<Config> keyframes, OperatorProfile profile, std::uint64_t seed);
+  GuideFollower(const SE3Space& space, std::vector<Config> keyframes, OperatorProfile profile,
+                std::uint64_t seed);
 
   DeviceReading read(double t) const override;
   double end_time() const override { return timeline_.back().t; }
@@ -45,8 +48,8 @@ class GuideFollower final : public OperatorSource {
   std::vector<Config> keyframes_;
   std::vector<double> cumulative_;  ///< arc length at each keyframe
   OperatorProfile profile_;
-  std::vector<Breakpoint> timeline_;          ///< s(t), piecewise linear
-  std::vector<std::vector<Wave>> tremor_;     ///< six channels: x, y, z, rx, ry, rz
+  std::vector<Breakpoint> timeline_;       ///< s(t), piecewise linear
+  std::vector<std::vector<Wave>> tremor_;  ///< six channels: x, y, z, rx, ry, rz
 };
 
 }  // namespace tandem

@@ -5,7 +5,8 @@
 
 namespace tandem {
 
-OperatorProfile operator_profile(std::string_view name, const SE3Space& space, OperatorClock clock) {
+OperatorProfile operator_profile(std::string_view name, const SE3Space& space,
+                                 OperatorClock clock) {
   const double D = space.max_extent();
   const double diagonal = space.translation_extent();
   constexpr double kDeg = std::numbers::pi / 180.0;

@@ -2,9 +2,9 @@
 // How a simulated operator moves: the 2011 paper's simulated user (section VII) made richer.
 //
 // "A person has a good global idea of the way and poor fine motion": a simulated operator follows a
-// coarse guide (a few hand-placed keyframes) at some speed, with tremor, and, if inexperienced, slowly,
-// with pauses and back-ups. Amounts scale with the scene (its maximum extent D and the bounds' diagonal),
-// so one profile fits every scene.
+// coarse guide (a few hand-placed keyframes) at some speed, with tremor, and, if inexperienced,
+// slowly, with pauses and back-ups. Amounts scale with the scene (its maximum extent D and the
+// bounds' diagonal), so one profile fits every scene.
 
 #include <string>
 #include <string_view>
@@ -29,8 +29,8 @@ struct OperatorProfile {
   double backtrack_distance = 0.0;  ///< metric distance backed up
 };
 
-/// "experienced" (fast, precise) or "inexperienced" (slow, noisy, hesitating), scaled to the space and
-/// the clock. Throws std::invalid_argument for another name.
+/// "experienced" (fast, precise) or "inexperienced" (slow, noisy, hesitating), scaled to the space
+/// and the clock. Throws std::invalid_argument for another name.
 OperatorProfile operator_profile(std::string_view name, const SE3Space& space, OperatorClock clock);
 
 const std::vector<std::string>& operator_profile_names();

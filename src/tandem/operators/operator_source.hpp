@@ -1,10 +1,10 @@
 #pragma once
 // Where q_device comes from: a simulated operator, a recorded trace (and, later, live devices).
 //
-// A source is a pure function of operator time: read(t) gives the same reading for the same t whatever
-// was read before and on whichever thread. The determinism of virtual-time runs rests on this (the
-// operator state of iteration k can be computed ahead on the operator thread or late on the planner
-// thread, with the same result).
+// A source is a pure function of operator time: read(t) gives the same reading for the same t
+// whatever was read before and on whichever thread. The determinism of virtual-time runs rests on
+// this (the operator state of iteration k can be computed ahead on the operator thread or late on
+// the planner thread, with the same result).
 //
 // Threading: read() is const and may run concurrently on several threads.
 

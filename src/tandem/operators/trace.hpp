@@ -10,10 +10,10 @@
 //   0 -2 0 0.6 0 0 0.7071067811865476 0.7071067811865476 0
 //   ...
 //
-// t is operator time (planner iterations for "ticks", seconds for "seconds") and never decreases; the
-// pose is the object's (x y z and a unit quaternion); buttons is a bit mask. Numbers are written with
-// 17 significant digits so that a replay sees exactly the recorded values. Lines starting with '#' are
-// comments, except the two header lines, which are required.
+// t is operator time (planner iterations for "ticks", seconds for "seconds") and never decreases;
+// the pose is the object's (x y z and a unit quaternion); buttons is a bit mask. Numbers are
+// written with 17 significant digits so that a replay sees exactly the recorded values. Lines
+// starting with '#' are comments, except the two header lines, which are required.
 
 #include <filesystem>
 #include <string>
@@ -42,8 +42,8 @@ Trace parse_trace(const std::string& text, const std::string& source);
 Trace read_trace_file(const std::filesystem::path& file);
 void write_trace_file(const std::filesystem::path& file, const Trace& trace);
 
-/// Replays a trace: the pose at t is the geodesic interpolation between the samples around t (the last
-/// sample after the end); buttons are those of the last sample at or before t.
+/// Replays a trace: the pose at t is the geodesic interpolation between the samples around t (the
+/// last sample after the end); buttons are those of the last sample at or before t.
 class TracePlayer final : public OperatorSource {
  public:
   TracePlayer(const SE3Space& space, Trace trace);

@@ -3,17 +3,11 @@
 // most `range`.
 
 #include "tandem/collision/motion_validator.hpp"
+#include "tandem/planning/extend_status.hpp"
 #include "tandem/planning/planner.hpp"
 #include "tandem/planning/tree.hpp"
 
 namespace tandem {
-
-enum class ExtendStatus : std::uint8_t {
-  trapped,   ///< nothing added (the I-RRT's "Collision")
-  advanced,  ///< a node was added one full range toward the target
-  reached,   ///< a node equal to the target was added (the I-RRT's "Reached")
-  stopped,   ///< last_valid mode: a node was added short of the target, at an obstacle ("Obstacle")
-};
 
 struct Extension {
   ExtendStatus status = ExtendStatus::trapped;

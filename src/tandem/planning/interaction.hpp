@@ -2,11 +2,11 @@
 // The human loop as the planner sees it: the operator's state (through an OperatorFeed) and the
 // tunables of the interactive planners, which the viewer may change while planning.
 //
-//   Blin, Taix, Fillatreau, Fourquet, "I-RRT-C: Interactive Motion Planning with Contact", IROS 2016,
-//   and "Tuning Interaction in Motion Planning with Contact": authority sharing alpha, contact samples
-//   N, contact distance d.
-//   Taix, Flavigne, "Motion Planning with interactive devices", ECMS 2011: the I-RRT's pseudo-forces,
-//   Gaussian shooting area (sigma), sampling modes, p nearest nodes.
+//   Blin, Taix, Fillatreau, Fourquet, "I-RRT-C: Interactive Motion Planning with Contact", IROS
+//   2016, and "Tuning Interaction in Motion Planning with Contact": authority sharing alpha,
+//   contact samples N, contact distance d. Taix, Flavigne, "Motion Planning with interactive
+//   devices", ECMS 2011: the I-RRT's pseudo-forces, Gaussian shooting area (sigma), sampling modes,
+//   p nearest nodes.
 
 #include <optional>
 #include <string_view>
@@ -16,35 +16,36 @@
 
 namespace tandem {
 
-/// I-RRT sampling modes (2011, section VII): around the user's position (MAG) or path (PATH), with or
-/// without uniform samples added (+CS).
+/// I-RRT sampling modes (2011, section VII): around the user's position (MAG) or path (PATH), with
+/// or without uniform samples added (+CS).
 enum class IrrtSampling : std::uint8_t { mag, path, mag_cs, path_cs };
 std::string_view to_string(IrrtSampling mode);
 std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name);
 
-/// The interactive planners' tunables, with their defaults. Lengths in scene units; a value <= 0 means
-/// "scaled to the scene" as documented.
+/// The interactive planners' tunables, with their defaults. Lengths in scene units; a value <= 0
+/// means "scaled to the scene" as documented.
 struct InteractionSettings {
   /// Authority sharing: the probability that the computer has authority (a uniform sample) in an
   /// iteration; else the operator has it. 1 is BiRRT alone, 0 the operator alone.
   double alpha = 1.0;
-  bool contact = false;          ///< contact sampling when the operator is near an obstacle
-  int contact_samples = 10;      ///< N, the papers' value
-  /// d: contact mode when the object at q_device is within d of an obstacle. <= 0: 1.5% of the bounds'
-  /// diagonal (the papers' 0.15 m in their 10 m scene).
+  bool contact = false;      ///< contact sampling when the operator is near an obstacle
+  int contact_samples = 10;  ///< N, the papers' value
+  /// d: contact mode when the object at q_device is within d of an obstacle. <= 0: 1.5% of the
+  /// bounds' diagonal (the papers' 0.15 m in their 10 m scene).
   double contact_distance = 0.0;
-  /// Gap between contact samples and the tangent plane (FCL counts touching as collision). <= 0: 0.1 x
-  /// the space's translation step.
+  /// Gap between contact samples and the tangent plane (FCL counts touching as collision). <= 0:
+  /// 0.1 x the space's translation step.
   double contact_clearance = 0.0;
 
   // I-RRT (2011).
   IrrtSampling sampling = IrrtSampling::mag;
-  double force_mix = 0.5;   ///< the I-RRT's alpha: F_r = force_mix F_u + (1 - force_mix) F_a
-  int neighbours = 10;      ///< p, nearest nodes to the user for the centre of mass (the paper's 10)
-  /// sigma, standard deviation of the Gaussian shooting area across F_r, in translation; <= 0: 2% of the
-  /// bounds' diagonal. The rotation part uses sigma / diagonal x pi.
+  double force_mix = 0.5;  ///< the I-RRT's alpha: F_r = force_mix F_u + (1 - force_mix) F_a
+  int neighbours = 10;     ///< p, nearest nodes to the user for the centre of mass (the paper's 10)
+  /// sigma, standard deviation of the Gaussian shooting area across F_r, in translation; <= 0: 2%
+  /// of the bounds' diagonal. The rotation part uses sigma / diagonal x pi.
   double sigma = 0.0;
-  int uniform_every = 10;   ///< x: in +CS modes, one uniform sample every x shots when the user is still
+  int uniform_every =
+      10;  ///< x: in +CS modes, one uniform sample every x shots when the user is still
 };
 
 /// Scene-scaled values of the "<= 0 means default" fields.
@@ -55,8 +56,8 @@ double sigma_translation(const InteractionSettings& s, const SE3Space& space);
 /// InteractionSettings shared between a UI thread (which changes them) and the planner thread.
 ///
 /// Threading: set() and current() belong to one writer thread; latest() to the planner thread, for
-/// which it is wait-free (a LatestValue): the planner reads the settings at the start of each iteration,
-/// so a change applies from the next iteration on.
+/// which it is wait-free (a LatestValue): the planner reads the settings at the start of each
+/// iteration, so a change applies from the next iteration on.
 class InteractionParameters {
  public:
   explicit InteractionParameters(const InteractionSettings& initial = {}) : current_(initial) {
@@ -75,8 +76,8 @@ class InteractionParameters {
 };
 
 /// The guidance pseudo-force F_a the I-RRT sends back to the device (2011, section V-A): from the
-/// user's position toward the labelled centre of mass of the p nearest nodes. Linear part in scene units,
-/// angular part a rotation vector in radians.
+/// user's position toward the labelled centre of mass of the p nearest nodes. Linear part in scene
+/// units, angular part a rotation vector in radians.
 struct Guidance {
   std::uint64_t iteration = 0;
   Eigen::Matrix<double, 6, 1> force = Eigen::Matrix<double, 6, 1>::Zero();

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "tandem/core/stopwatch.hpp"
+#include "tandem/planning/irrt.hpp"
 #include "tandem/planning/rrt.hpp"
 #include "tandem/planning/rrt_connect.hpp"
 
@@ -107,9 +108,19 @@ void Planner::update_counts() {
       interaction_.feed != nullptr ? interaction_.feed->operator_seconds() : 0.0;
   stats_.operator_iterations = operator_iterations_;
   stats_.contact_entries = contact_entries_;
+  stats_.extensions_collision =
+      extension_outcomes_[static_cast<std::size_t>(ExtendStatus::trapped)];
+  stats_.extensions_reached = extension_outcomes_[static_cast<std::size_t>(ExtendStatus::reached)];
+  stats_.extensions_obstacle =
+      extension_outcomes_[static_cast<std::size_t>(ExtendStatus::advanced)] +
+      extension_outcomes_[static_cast<std::size_t>(ExtendStatus::stopped)];
   stats_.collision_checks = validator_.checks() - checks_at_start_;
   stats_.collision_time_s = validator_.check_seconds() - check_seconds_at_start_;
   stats_.nearest_time_s = nearest_seconds_;
+}
+
+void Planner::count_extension(ExtendStatus status) {
+  ++extension_outcomes_[static_cast<std::size_t>(status)];
 }
 
 void Planner::attach(Tree& tree) {
@@ -171,13 +182,15 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
                                       const Interaction* interaction) {
   if (name == "birrt" || name == "rrtconnect")
     return std::make_unique<RRTConnect>(validator, start, goal, settings, interaction);
+  if (name == "irrt")
+    return std::make_unique<IRRT>(validator, start, goal, settings, interaction);
   if (name == "rrt")
     return std::make_unique<RRT>(validator, start, goal, settings);
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }
 
 const std::vector<std::string>& planner_names() {
-  static const std::vector<std::string> kNames = {"birrt", "rrt"};
+  static const std::vector<std::string> kNames = {"birrt", "rrt", "irrt"};
   return kNames;
 }
 

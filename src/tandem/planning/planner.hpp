@@ -22,6 +22,7 @@
 
 #include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/rng.hpp"
+#include "tandem/planning/extend_status.hpp"
 #include "tandem/planning/interaction.hpp"
 #include "tandem/planning/tree.hpp"
 
@@ -84,6 +85,11 @@ struct PlannerStats {
   /// Iterations in which the operator had authority, and how often contact mode was entered.
   std::uint64_t operator_iterations = 0;
   std::uint64_t contact_entries = 0;
+  /// Outcomes of the extensions toward the iterations' targets (connections not included), the
+  /// I-RRT's classes: Collision (nothing added), Reached, Obstacle (stopped short of the target).
+  std::uint64_t extensions_collision = 0;
+  std::uint64_t extensions_reached = 0;
+  std::uint64_t extensions_obstacle = 0;
 };
 
 struct Termination {
@@ -126,6 +132,8 @@ class Planner {
   void update_counts();
   /// Subclasses call this for each tree they own, after constructing it.
   void attach(Tree& tree);
+  /// Counts an extension toward an iteration's target in the statistics.
+  void count_extension(ExtendStatus status);
 
   /// The interaction settings in force this iteration (live, if the Interaction has parameters).
   const InteractionSettings& interaction_settings();
@@ -152,6 +160,9 @@ class Planner {
   /// Interactive planners count these; update_counts() publishes them in stats().
   std::uint64_t operator_iterations_ = 0;
   std::uint64_t contact_entries_ = 0;
+
+ private:
+  std::array<std::uint64_t, 4> extension_outcomes_{};
 };
 
 /// "birrt" (RRT-Connect) or "rrt". Throws std::invalid_argument for an unknown name.

@@ -59,6 +59,7 @@ bool RRTConnect::iterate() {
     // 2. Add_Tree: extend toward the target, then connect the other tree to q_new.
     const Extension ext =
         extend(tree_a, target.q, range_, validator_, settings_.extend, target.source);
+    count_extension(ext.status);
     if (ext.status == ExtendStatus::trapped)
       continue;
     const Config q_new = tree_a.nodes[ext.node];

@@ -22,17 +22,21 @@ std::vector<Eigen::Vector3d> plane_box_polygon(const Eigen::Vector3d& p, const E
       start[c] = (k & 2) ? hi[c] : lo[c];
       const double f0 = n.dot(start - p);
       const double slope = n[a] * (hi[a] - lo[a]);
-      if (slope == 0.0) continue;
+      if (slope == 0.0)
+        continue;
       const double s = -f0 / slope;
-      if (s < 0.0 || s > 1.0) continue;
+      if (s < 0.0 || s > 1.0)
+        continue;
       Eigen::Vector3d q = start;
       q[a] = lo[a] + s * (hi[a] - lo[a]);
       points.push_back(q);
     }
   }
-  if (points.size() < 3) return points;
+  if (points.size() < 3)
+    return points;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& q : points) centre += q / static_cast<double>(points.size());
+  for (const auto& q : points)
+    centre += q / static_cast<double>(points.size());
   const Eigen::Matrix3d R = gram_schmidt(n);
   std::sort(points.begin(), points.end(), [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
     const Eigen::Vector3d lx = R.transpose() * (x - centre), ly = R.transpose() * (y - centre);
@@ -51,7 +55,8 @@ Eigen::Vector3d uniform_in_polygon(const std::vector<Eigen::Vector3d>& poly, Rng
   }
   const double pick = rng.uniform01() * total;
   std::size_t k = 0;
-  while (k + 1 < areas.size() && areas[k] < pick) ++k;
+  while (k + 1 < areas.size() && areas[k] < pick)
+    ++k;
   double u = rng.uniform01(), v = rng.uniform01();
   if (u + v > 1.0) {
     u = 1.0 - u;
@@ -62,9 +67,11 @@ Eigen::Vector3d uniform_in_polygon(const std::vector<Eigen::Vector3d>& poly, Rng
 
 }  // namespace
 
-std::optional<Config> sample_contact(const ContactFrame& frame, const Eigen::Quaterniond& q_operator,
-                                     const SE3Space& space, double clearance, Rng& rng) {
-  // Move onto contact: the object's nearest point goes from P_n to `clearance` above the tangent plane.
+std::optional<Config> sample_contact(const ContactFrame& frame,
+                                     const Eigen::Quaterniond& q_operator, const SE3Space& space,
+                                     double clearance, Rng& rng) {
+  // Move onto contact: the object's nearest point goes from P_n to `clearance` above the tangent
+  // plane.
   const Eigen::Vector3d to_contact = -(frame.distance - clearance) * frame.n;
   const Bounds& b = space.bounds();
   Config q;
@@ -72,29 +79,34 @@ std::optional<Config> sample_contact(const ContactFrame& frame, const Eigen::Qua
   if (space.planar()) {
     // The line through P_c perpendicular to n (in the plane of motion), clipped to the bounds.
     Eigen::Vector2d n2 = frame.n.head<2>();
-    if (!(n2.norm() > 1e-9)) return std::nullopt;
+    if (!(n2.norm() > 1e-9))
+      return std::nullopt;
     n2.normalize();
     const Eigen::Vector2d dir(-n2.y(), n2.x());
     const Eigen::Vector2d c = frame.P_c.head<2>() + to_contact.head<2>();
     double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
     for (int a = 0; a < 2; ++a) {
       if (std::abs(dir[a]) < 1e-12) {
-        if (c[a] < b.min[a] || c[a] > b.max[a]) return std::nullopt;
+        if (c[a] < b.min[a] || c[a] > b.max[a])
+          return std::nullopt;
         continue;
       }
       double s0 = (b.min[a] - c[a]) / dir[a], s1 = (b.max[a] - c[a]) / dir[a];
-      if (s0 > s1) std::swap(s0, s1);
+      if (s0 > s1)
+        std::swap(s0, s1);
       lo = std::max(lo, s0);
       hi = std::min(hi, s1);
     }
-    if (!(lo <= hi)) return std::nullopt;
+    if (!(lo <= hi))
+      return std::nullopt;
     const Eigen::Vector2d p = c + rng.uniform(lo, hi) * dir;
     q.t = Eigen::Vector3d(p.x(), p.y(), b.min.z());
     return q;
   }
   const Eigen::Vector3d centre = frame.P_c + to_contact;
   const std::vector<Eigen::Vector3d> poly = plane_box_polygon(centre, frame.n, b);
-  if (poly.size() < 3) return std::nullopt;
+  if (poly.size() < 3)
+    return std::nullopt;
   q.t = uniform_in_polygon(poly, rng);
   // Rounding may leave a vertex a hair outside.
   q.t = q.t.cwiseMax(b.min).cwiseMin(b.max);
