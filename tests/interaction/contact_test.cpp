@@ -42,6 +42,7 @@ struct FloorScene {
                    SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
                    start,
                    goal,
+                   {},
                    {}};
   }
 };

@@ -100,13 +100,15 @@ bool IRRT::iterate() {
   }
   const Extension e = extend(tree_, q_rand, range_, validator_, settings_.extend, source);
   count_extension(e.status);
-  NodeLabel& near = labels_[e.near];
+  if (e.status != ExtendStatus::trapped) {
+    labels_.push_back({space_.distance(tree_.nodes[e.node], goal_)});
+  }
+  NodeLabel& near = labels_[e.near];  // after the push_back, which may move the labels
   ++near.extensions;
   if (e.status == ExtendStatus::trapped) {
     ++near.collisions;
   } else {
     near.covered += space_.distance(tree_.nodes[e.near], tree_.nodes[e.node]);
-    labels_.push_back({space_.distance(tree_.nodes[e.node], goal_)});
   }
   near.collision_label = static_cast<double>(near.collisions) / (near.extensions + 1.0) *
                          std::max(0.0, 1.0 - near.covered / (near.extensions * range_));

@@ -211,6 +211,7 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
                   SE3Space(planar ? SpaceKind::planar : SpaceKind::se3, bounds),
                   start,
                   goal,
+                  {},
                   {}};
 
   if (auto b = ini.find("benchmark"); b != ini.end()) {

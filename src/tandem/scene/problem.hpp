@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tandem/scene/scene.hpp"
 #include "tandem/space/se3_space.hpp"
@@ -31,6 +32,12 @@ struct Problem {
   Config start;
   Config goal;
   ProblemPlannerHints hints;
+  /// A simulated operator's guide: a few keyframes placed by hand, as a person would gesture the way
+  /// (coarse; it may pass through obstacles). Empty if the problem has none.
+  std::vector<Config> guide;
 };
+
+/// A guide has at most this many keyframes (so that it stays a gesture, not a path).
+inline constexpr std::size_t kMaxGuideKeyframes = 12;
 
 }  // namespace tandem

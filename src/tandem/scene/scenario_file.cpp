@@ -427,6 +427,29 @@ Problem parse_scenario(std::string_view text, const std::string& source,
     goal = read_config(g, *space);
   }
 
+  std::vector<Config> guide;
+  if (top.has("guide")) {
+    Table g = top.subtable("guide");
+    const toml::node& n = g.require("keyframes");
+    const toml::array* keys = n.as_array();
+    if (!keys || keys->empty()) g.fail(n, "keyframes", "must be a non-empty array of tables");
+    if (keys->size() > kMaxGuideKeyframes) {
+      g.fail(n, "keyframes", "has " + std::to_string(keys->size()) + " keyframes; a guide has at most " +
+                                 std::to_string(kMaxGuideKeyframes));
+    }
+    for (std::size_t i = 0; i < keys->size(); ++i) {
+      const toml::table* kt = (*keys)[i].as_table();
+      if (!kt) g.fail((*keys)[i], "keyframes", "must contain tables");
+      Table k(*kt, source, "guide.keyframes[" + std::to_string(i) + "]");
+      Config q = read_config(k, *space);
+      if (!space->satisfies_bounds(q)) {
+        throw InputError(k.at_table(), k.where() + " is outside the space's bounds");
+      }
+      guide.push_back(q);
+    }
+    g.reject_unknown();
+  }
+
   ProblemPlannerHints hints;
   if (top.has("planner")) {
     Table p = top.subtable("planner");
@@ -466,7 +489,7 @@ Problem parse_scenario(std::string_view text, const std::string& source,
   }
   top.reject_unknown();
 
-  return Problem{name, source, std::move(scene), *space, start, goal, hints};
+  return Problem{name, source, std::move(scene), *space, start, goal, hints, std::move(guide)};
 }
 
 Problem load_scenario_file(const std::filesystem::path& file, const FileAccess& access) {

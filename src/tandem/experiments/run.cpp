@@ -1,0 +1,99 @@
+#include "tandem/experiments/run.hpp"
+
+#include <sstream>
+
+#include "tandem/core/error.hpp"
+#include "tandem/operators/guide_follower.hpp"
+#include "tandem/operators/trace.hpp"
+
+namespace tandem {
+
+std::string_view to_string(PlannerMode mode) {
+  static constexpr std::string_view kNames[] = {"birrt", "rrt", "interactive", "interactive-contact", "irrt"};
+  return kNames[static_cast<std::size_t>(mode)];
+}
+
+const std::vector<std::string>& planner_mode_names() {
+  static const std::vector<std::string> kNames = {"birrt", "rrt", "interactive", "interactive-contact", "irrt"};
+  return kNames;
+}
+
+std::optional<PlannerMode> parse_planner_mode(std::string_view name) {
+  for (auto m : {PlannerMode::birrt, PlannerMode::rrt, PlannerMode::interactive, PlannerMode::interactive_contact,
+                 PlannerMode::irrt}) {
+    if (to_string(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+bool is_interactive(PlannerMode mode) {
+  return mode == PlannerMode::interactive || mode == PlannerMode::interactive_contact || mode == PlannerMode::irrt;
+}
+
+std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec) {
+  const std::string& name = spec.operator_name;
+  if (name.rfind("trace:", 0) == 0) {
+    Trace trace = read_trace_file(name.substr(6));
+    if (trace.clock != OperatorClock::ticks) {
+      throw InputError(name.substr(6), "a trace in seconds cannot drive a virtual-time run (record it in ticks)");
+    }
+    return std::make_shared<TracePlayer>(problem.space, std::move(trace));
+  }
+  if (problem.guide.empty()) {
+    throw InputError(problem.source, "the problem has no [guide] for a simulated operator; give a trace instead");
+  }
+  OperatorProfile profile;
+  try {
+    profile = operator_profile(name, problem.space, OperatorClock::ticks);
+  } catch (const std::invalid_argument&) {
+    throw InputError("--operator", "unknown operator '" + name + "' (experienced, inexperienced, or trace:FILE)");
+  }
+  if (!(spec.operator_speed > 0.0)) throw InputError("--operator-speed", "must be positive");
+  profile.speed *= spec.operator_speed;
+  return std::make_shared<GuideFollower>(problem.space, problem.guide, profile, spec.operator_seed);
+}
+
+RunOutcome execute_run(const Problem& problem, const RunSpec& spec) {
+  CollisionChecker checker(problem.scene);
+  return execute_run(problem, spec, checker);
+}
+
+RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker) {
+  MotionValidator validator(problem.space, checker);
+  PlannerSettings settings = spec.settings;
+  if (spec.mode == PlannerMode::birrt || spec.mode == PlannerMode::rrt) {
+    settings.interaction.alpha = 1.0;
+    settings.interaction.contact = false;
+  } else if (spec.mode == PlannerMode::interactive) {
+    settings.interaction.contact = false;
+  } else if (spec.mode == PlannerMode::interactive_contact) {
+    settings.interaction.contact = true;
+  }
+
+  RunOutcome outcome;
+  std::unique_ptr<VirtualTimeFeed> feed;
+  Interaction interaction;
+  if (is_interactive(spec.mode)) {
+    auto source = make_operator(problem, spec);
+    outcome.operator_description = source->describe();
+    feed = std::make_unique<VirtualTimeFeed>(OperatorModel(checker, std::move(source)), spec.operator_period);
+    interaction.feed = feed.get();
+  }
+  const std::string_view planner_name =
+      spec.mode == PlannerMode::rrt ? "rrt" : (spec.mode == PlannerMode::irrt ? "irrt" : "birrt");
+  auto planner = make_planner(planner_name, validator, problem.start, problem.goal, settings,
+                              interaction.feed != nullptr ? &interaction : nullptr);
+  Termination termination;
+  termination.time_limit_s = spec.time_limit;
+  termination.max_iterations = spec.max_iterations;
+  outcome.status = planner->solve(termination);
+  outcome.stats = planner->stats();
+  outcome.range = planner->range();
+  if (outcome.status == PlannerStatus::solved) {
+    outcome.path = planner->solution();
+    outcome.path_length = path_length(problem.space, outcome.path);
+  }
+  return outcome;
+}
+
+}  // namespace tandem

@@ -1,0 +1,64 @@
+#pragma once
+// One planning run, as the command line and the experiments describe it: which planner mode, its
+// settings, and who the operator is. execute_run() builds the collision checker, the operator (a
+// simulated one following the problem's guide, or a recorded trace) and its feed, runs the planner, and
+// returns the outcome. Deterministic for a given spec in virtual time.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tandem/operators/operator_profile.hpp"
+#include "tandem/planning/path.hpp"
+#include "tandem/planning/planner.hpp"
+#include "tandem/scene/problem.hpp"
+
+namespace tandem {
+
+/// The planner modes of the papers' experiments.
+enum class PlannerMode : std::uint8_t {
+  birrt,                ///< the computer alone (Kuffner & LaValle's RRT-Connect)
+  rrt,                  ///< single-tree RRT, the computer alone
+  interactive,          ///< authority sharing (Blin et al. 2016, Algorithm 1)
+  interactive_contact,  ///< authority sharing with contact sampling (Algorithm 3)
+  irrt,                 ///< the I-RRT (Taix & Flavigne 2011)
+};
+std::string_view to_string(PlannerMode mode);
+std::optional<PlannerMode> parse_planner_mode(std::string_view name);
+const std::vector<std::string>& planner_mode_names();
+bool is_interactive(PlannerMode mode);
+
+struct RunSpec {
+  PlannerMode mode = PlannerMode::birrt;
+  PlannerSettings settings;
+  /// "experienced" / "inexperienced" (following the problem's guide), or "trace:FILE".
+  std::string operator_name = "experienced";
+  /// Multiplies the profile's speed (1 = the profile's own).
+  double operator_speed = 1.0;
+  std::uint64_t operator_seed = 1;
+  /// Virtual time: the operator's state changes every this many planner iterations.
+  std::uint64_t operator_period = 10;
+  double time_limit = 60.0;
+  std::uint64_t max_iterations = UINT64_MAX;
+};
+
+struct RunOutcome {
+  PlannerStatus status = PlannerStatus::running;
+  PlannerStats stats;
+  Path path;              ///< the planner's path (not simplified); empty unless solved
+  double path_length = 0.0;
+  std::string operator_description;
+  double range = 0.0;
+};
+
+/// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or trace, a
+/// trace that cannot be read, a start or goal that is not valid).
+RunOutcome execute_run(const Problem& problem, const RunSpec& spec);
+/// The same with a checker built for the problem's scene (its counters keep counting).
+RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker);
+
+/// The operator source of a spec: a guide follower or a trace player.
+std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec);
+
+}  // namespace tandem
