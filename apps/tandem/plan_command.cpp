@@ -5,9 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <optional>
-
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -57,10 +56,12 @@ constexpr double kDefaultInteractiveAlpha = 0.5;
 
 /// Fails before planning, not after, when an output file cannot be written: no work is lost.
 void require_writable(const std::string& file) {
-  if (file.empty()) return;
+  if (file.empty())
+    return;
   const std::filesystem::path p = std::filesystem::absolute(file);
   std::error_code ec;
-  if (std::filesystem::is_directory(p, ec)) throw InputError(file, "is a folder");
+  if (std::filesystem::is_directory(p, ec))
+    throw InputError(file, "is a folder");
   if (!std::filesystem::is_directory(p.parent_path(), ec)) {
     throw InputError(file, "cannot be written: no folder " + p.parent_path().string());
   }
@@ -72,8 +73,10 @@ void require_writable(const std::string& file) {
 RunSpec make_spec(const PlanArgs& args, const Problem& problem) {
   RunSpec spec;
   // --mode, else --planner, else the problem's planner.
-  if (args.mode && args.planner) throw InputError("--mode", "give --mode or --planner, not both");
-  const std::string mode = args.mode.value_or(args.planner.value_or(problem.hints.planner.value_or("birrt")));
+  if (args.mode && args.planner)
+    throw InputError("--mode", "give --mode or --planner, not both");
+  const std::string mode =
+      args.mode.value_or(args.planner.value_or(problem.hints.planner.value_or("birrt")));
   spec.mode = *parse_planner_mode(mode);
   const std::string range_key = spec.mode == PlannerMode::rrt ? "rrt" : "birrt";
 
@@ -91,7 +94,8 @@ RunSpec make_spec(const PlanArgs& args, const Problem& problem) {
   InteractionSettings& i = s.interaction;
   i.alpha = args.alpha.value_or(is_interactive(spec.mode) ? kDefaultInteractiveAlpha : 1.0);
   if (args.alpha && !is_interactive(spec.mode)) {
-    throw InputError("--alpha", "needs an interactive mode (--mode interactive or interactive-contact)");
+    throw InputError("--alpha",
+                     "needs an interactive mode (--mode interactive or interactive-contact)");
   }
   i.contact_samples = args.contact_samples;
   i.contact_distance = args.contact_distance;
@@ -145,9 +149,11 @@ int run_plan(const PlanArgs& args) {
     if (!check.valid) {
       throw std::logic_error("the planned path failed its own check: " + check.describe());
     }
-    if (!args.out.empty()) write_path_file(args.out, path, problem.space);
+    if (!args.out.empty())
+      write_path_file(args.out, path, problem.space);
   }
-  if (!args.svg.empty()) write_file_atomically(args.svg, render_svg(problem, path));
+  if (!args.svg.empty())
+    write_file_atomically(args.svg, render_svg(problem, path));
 
   const std::string mode(to_string(spec.mode));
   if (args.json) {
@@ -167,7 +173,8 @@ int run_plan(const PlanArgs& args) {
     j["edges"] = stats.edges;
     j["nodes_by_source"] = sources_json(stats);
     j["collision_checks"] = stats.collision_checks;
-    j["path_length"] = solved ? nlohmann::json(path_length(problem.space, path)) : nlohmann::json(nullptr);
+    j["path_length"] =
+        solved ? nlohmann::json(path_length(problem.space, path)) : nlohmann::json(nullptr);
     j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nlohmann::json(nullptr);
     j["path_states"] = path.size();
     j["simplify_time_s"] = simplify_time;
@@ -202,17 +209,21 @@ int run_plan(const PlanArgs& args) {
               << " collision checks (seed " << spec.settings.seed << ")\n";
     if (is_interactive(spec.mode)) {
       std::cout << "operator: " << run.operator_description << "; nodes from random samples "
-                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::random)] << ", operator "
-                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::operator_)] << ", contact "
+                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::random)]
+                << ", operator "
+                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::operator_)]
+                << ", contact "
                 << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::contact)] << '\n';
     }
     if (solved) {
       std::cout << "path: " << path.size() << " states, length " << path_length(problem.space, path)
                 << " (before simplification " << run.path_length << ")";
-      if (!args.out.empty()) std::cout << ", written to " << args.out;
+      if (!args.out.empty())
+        std::cout << ", written to " << args.out;
       std::cout << '\n';
     }
-    if (!args.svg.empty()) std::cout << "picture: " << args.svg << '\n';
+    if (!args.svg.empty())
+      std::cout << "picture: " << args.svg << '\n';
   }
   return solved ? 0 : 1;
 }
@@ -222,10 +233,11 @@ int run_plan(const PlanArgs& args) {
 Command add_plan_command(CLI::App& app) {
   auto args = std::make_shared<PlanArgs>();
   add_problem_args(app, args->problem);
-  app.add_option("--mode", args->mode,
-                 "birrt (the computer alone, default), rrt, interactive (authority sharing, Blin et "
-                 "al. 2016 Alg. 1), interactive-contact (with contact sampling, Alg. 3) or irrt "
-                 "(Taix & Flavigne 2011)")
+  app.add_option(
+         "--mode", args->mode,
+         "birrt (the computer alone, default), rrt, interactive (authority sharing, Blin et "
+         "al. 2016 Alg. 1), interactive-contact (with contact sampling, Alg. 3) or irrt "
+         "(Taix & Flavigne 2011)")
       ->check(CLI::IsMember(planner_mode_names()));
   app.add_option("--planner", args->planner, "Planner without an operator: birrt (default) or rrt")
       ->check(CLI::IsMember({"birrt", "rrt"}));
@@ -249,9 +261,10 @@ Command add_plan_command(CLI::App& app) {
       ->check(CLI::IsMember({"classic", "last-valid"}));
 
   const char* human = "Human loop";
-  app.add_option("--operator", args->operator_name,
-                 "The operator in interactive modes: experienced (default) or inexperienced, following "
-                 "the problem's [guide] in virtual time, or trace:FILE (a recorded trace in ticks)")
+  app.add_option(
+         "--operator", args->operator_name,
+         "The operator in interactive modes: experienced (default) or inexperienced, following "
+         "the problem's [guide] in virtual time, or trace:FILE (a recorded trace in ticks)")
       ->group(human);
   app.add_option("--operator-speed", args->operator_speed,
                  "Multiplies the simulated operator's speed along the guide (default 1)")

@@ -36,14 +36,9 @@ struct FloorScene {
     Config start, goal;
     start.t = {-2, 0, 1};
     goal.t = {1, 0, 1};
-    return Problem{"floor",
-                   "test",
-                   std::move(s),
-                   SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
-                   start,
-                   goal,
-                   {},
-                   {}};
+    return Problem{
+        "floor", "test", std::move(s), SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
+        start,   goal,   {},           {}};
   }
 };
 

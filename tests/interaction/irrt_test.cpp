@@ -1,10 +1,11 @@
 // The I-RRT (Taix and Flavigne 2011) and its Gaussian shooting area.
 
+#include "tandem/planning/irrt.hpp"
+
 #include <gtest/gtest.h>
 
 #include "support/test_support.hpp"
 #include "tandem/operators/guide_follower.hpp"
-#include "tandem/planning/irrt.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/sampling/gaussian_shooter.hpp"
 
@@ -33,7 +34,8 @@ TEST(GaussianShot, IsCentredAndStretchedAlongTheForce) {
   EXPECT_NEAR(std::sqrt(var.x()), 3 * sigma_t, 0.05);
   EXPECT_NEAR(std::sqrt(var.y()), sigma_t, 0.02);
   EXPECT_NEAR(std::sqrt(var.z()), sigma_t, 0.02);
-  // Rotation: a 3-D normal rotation vector of deviation sigma_r has mean length sigma_r sqrt(8 / pi).
+  // Rotation: a 3-D normal rotation vector of deviation sigma_r has mean length sigma_r sqrt(8 /
+  // pi).
   EXPECT_NEAR(angle, sigma_r * std::sqrt(8.0 / std::numbers::pi), 0.01);
 }
 
@@ -41,7 +43,8 @@ TEST(GaussianShot, StaysInThePlaneAndInTheBounds) {
   const SE3Space plane(SpaceKind::planar, Bounds{{0, 0, 0}, {1, 1, 0}});
   Rng rng(2);
   for (int i = 0; i < 2000; ++i) {
-    const Config q = gaussian_shot(plane, plane.planar_config(0.9, 0.5, 0.0), Twist::Ones(), 0.3, 0.5, rng);
+    const Config q =
+        gaussian_shot(plane, plane.planar_config(0.9, 0.5, 0.0), Twist::Ones(), 0.3, 0.5, rng);
     ASSERT_TRUE(plane.satisfies_bounds(q));
     ASSERT_NEAR((q.q * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-12);
   }
@@ -62,15 +65,17 @@ struct Fixture {
     keys[1].t = {-0.8, 0.0, 0.0};
     keys[2].t = {0.8, 0.0, 0.0};
     keys[3] = problem.goal;
-    return std::make_shared<GuideFollower>(problem.space, keys,
-                                           operator_profile("experienced", problem.space, OperatorClock::ticks), 1);
+    return std::make_shared<GuideFollower>(
+        problem.space, keys, operator_profile("experienced", problem.space, OperatorClock::ticks),
+        1);
   }
 };
 
 TEST(IRRT, NeedsAnOperator) {
   Fixture f;
-  EXPECT_THROW(make_planner("irrt", f.validator, f.problem.start, f.problem.goal, PlannerSettings{}),
-               std::invalid_argument);
+  EXPECT_THROW(
+      make_planner("irrt", f.validator, f.problem.start, f.problem.goal, PlannerSettings{}),
+      std::invalid_argument);
 }
 
 class IrrtModes : public ::testing::TestWithParam<IrrtSampling> {};
@@ -83,7 +88,8 @@ TEST_P(IrrtModes, FollowTheUserToTheGoal) {
   VirtualTimeFeed feed(OperatorModel(f.checker, f.source()));
   LatestValue<Guidance> guidance;
   const Interaction interaction{&feed, nullptr, &guidance};
-  auto planner = make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner =
+      make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
   Termination t;
   t.max_iterations = 400000;
   ASSERT_EQ(planner->solve(t), PlannerStatus::solved);
@@ -96,11 +102,12 @@ TEST_P(IrrtModes, FollowTheUserToTheGoal) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllModes, IrrtModes,
-                         ::testing::Values(IrrtSampling::mag, IrrtSampling::path, IrrtSampling::mag_cs,
-                                           IrrtSampling::path_cs),
+                         ::testing::Values(IrrtSampling::mag, IrrtSampling::path,
+                                           IrrtSampling::mag_cs, IrrtSampling::path_cs),
                          [](const auto& test_info) {
                            std::string n(to_string(test_info.param));
-                           for (char& c : n) c = c == '+' ? '_' : c;
+                           for (char& c : n)
+                             c = c == '+' ? '_' : c;
                            return n;
                          });
 
@@ -113,11 +120,13 @@ TEST(IRRT, UniformSamplesOnlyInCsModes) {
     settings.interaction.sampling = mode;
     VirtualTimeFeed feed(OperatorModel(f.checker, f.source()));
     const Interaction interaction{&feed};
-    auto planner = make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner =
+        make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
     Termination t;
     t.max_iterations = 3000;
     planner->solve(t);
-    const auto random = planner->stats().nodes_by_source[static_cast<std::size_t>(NodeSource::random)];
+    const auto random =
+        planner->stats().nodes_by_source[static_cast<std::size_t>(NodeSource::random)];
     if (mode == IrrtSampling::mag) {
       EXPECT_EQ(random, 0u);
     } else {
@@ -134,7 +143,8 @@ TEST(IRRT, TheGuidanceForcePullsTheUserTowardTheTree) {
   keys[0] = f.problem.start;
   keys[1].t = {2, 2, 0};  // straight through the wall
   const auto source = std::make_shared<GuideFollower>(
-      f.problem.space, keys, operator_profile("experienced", f.problem.space, OperatorClock::ticks), 1);
+      f.problem.space, keys, operator_profile("experienced", f.problem.space, OperatorClock::ticks),
+      1);
   PlannerSettings settings;
   settings.goal_bias = 0.0;
   settings.extend = ExtendMode::last_valid;
@@ -148,7 +158,8 @@ TEST(IRRT, TheGuidanceForcePullsTheUserTowardTheTree) {
   const Twist fa = guidance.latest()->force;
   EXPECT_LT(fa.x(), -0.5);  // the user is past the wall at x = 2, the tree stays at x < 0
   double worst = 0.0;
-  for (const auto& l : planner.labels()) worst = std::max(worst, l.collision_label);
+  for (const auto& l : planner.labels())
+    worst = std::max(worst, l.collision_label);
   EXPECT_GT(worst, 0.1);
   for (std::size_t i = 0; i < planner.labels().size(); ++i) {
     ASSERT_DOUBLE_EQ(planner.labels()[i].distance_to_goal,
@@ -164,7 +175,8 @@ TEST(IRRT, IsDeterministicForASeedAndAnOperator) {
     settings.interaction.sampling = IrrtSampling::path_cs;
     VirtualTimeFeed feed(OperatorModel(f.checker, f.source()));
     const Interaction interaction{&feed};
-    auto planner = make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner =
+        make_planner("irrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
     Termination t;
     t.max_iterations = 2000;
     planner->solve(t);

@@ -33,8 +33,14 @@ Problem wall_with_gap_problem() {
   Config start, goal;
   start.t = {-2, 0, 0};
   goal.t = {2, 0, 0};
-  return Problem{
-      "wall-with-gap", "test", std::move(scene), SE3Space(SpaceKind::se3, bounds), start, goal, {}, {}};
+  return Problem{"wall-with-gap",
+                 "test",
+                 std::move(scene),
+                 SE3Space(SpaceKind::se3, bounds),
+                 start,
+                 goal,
+                 {},
+                 {}};
 }
 
 TempDir::TempDir() {

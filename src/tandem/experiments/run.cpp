@@ -9,25 +9,29 @@
 namespace tandem {
 
 std::string_view to_string(PlannerMode mode) {
-  static constexpr std::string_view kNames[] = {"birrt", "rrt", "interactive", "interactive-contact", "irrt"};
+  static constexpr std::string_view kNames[] = {"birrt", "rrt", "interactive",
+                                                "interactive-contact", "irrt"};
   return kNames[static_cast<std::size_t>(mode)];
 }
 
 const std::vector<std::string>& planner_mode_names() {
-  static const std::vector<std::string> kNames = {"birrt", "rrt", "interactive", "interactive-contact", "irrt"};
+  static const std::vector<std::string> kNames = {"birrt", "rrt", "interactive",
+                                                  "interactive-contact", "irrt"};
   return kNames;
 }
 
 std::optional<PlannerMode> parse_planner_mode(std::string_view name) {
-  for (auto m : {PlannerMode::birrt, PlannerMode::rrt, PlannerMode::interactive, PlannerMode::interactive_contact,
-                 PlannerMode::irrt}) {
-    if (to_string(m) == name) return m;
+  for (auto m : {PlannerMode::birrt, PlannerMode::rrt, PlannerMode::interactive,
+                 PlannerMode::interactive_contact, PlannerMode::irrt}) {
+    if (to_string(m) == name)
+      return m;
   }
   return std::nullopt;
 }
 
 bool is_interactive(PlannerMode mode) {
-  return mode == PlannerMode::interactive || mode == PlannerMode::interactive_contact || mode == PlannerMode::irrt;
+  return mode == PlannerMode::interactive || mode == PlannerMode::interactive_contact ||
+         mode == PlannerMode::irrt;
 }
 
 std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec) {
@@ -35,20 +39,24 @@ std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, cons
   if (name.rfind("trace:", 0) == 0) {
     Trace trace = read_trace_file(name.substr(6));
     if (trace.clock != OperatorClock::ticks) {
-      throw InputError(name.substr(6), "a trace in seconds cannot drive a virtual-time run (record it in ticks)");
+      throw InputError(name.substr(6),
+                       "a trace in seconds cannot drive a virtual-time run (record it in ticks)");
     }
     return std::make_shared<TracePlayer>(problem.space, std::move(trace));
   }
   if (problem.guide.empty()) {
-    throw InputError(problem.source, "the problem has no [guide] for a simulated operator; give a trace instead");
+    throw InputError(problem.source,
+                     "the problem has no [guide] for a simulated operator; give a trace instead");
   }
   OperatorProfile profile;
   try {
     profile = operator_profile(name, problem.space, OperatorClock::ticks);
   } catch (const std::invalid_argument&) {
-    throw InputError("--operator", "unknown operator '" + name + "' (experienced, inexperienced, or trace:FILE)");
+    throw InputError("--operator",
+                     "unknown operator '" + name + "' (experienced, inexperienced, or trace:FILE)");
   }
-  if (!(spec.operator_speed > 0.0)) throw InputError("--operator-speed", "must be positive");
+  if (!(spec.operator_speed > 0.0))
+    throw InputError("--operator-speed", "must be positive");
   profile.speed *= spec.operator_speed;
   return std::make_shared<GuideFollower>(problem.space, problem.guide, profile, spec.operator_seed);
 }
@@ -76,7 +84,8 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
   if (is_interactive(spec.mode)) {
     auto source = make_operator(problem, spec);
     outcome.operator_description = source->describe();
-    feed = std::make_unique<VirtualTimeFeed>(OperatorModel(checker, std::move(source)), spec.operator_period);
+    feed = std::make_unique<VirtualTimeFeed>(OperatorModel(checker, std::move(source)),
+                                             spec.operator_period);
     interaction.feed = feed.get();
   }
   const std::string_view planner_name =

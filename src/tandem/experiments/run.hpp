@@ -1,8 +1,8 @@
 #pragma once
 // One planning run, as the command line and the experiments describe it: which planner mode, its
 // settings, and who the operator is. execute_run() builds the collision checker, the operator (a
-// simulated one following the problem's guide, or a recorded trace) and its feed, runs the planner, and
-// returns the outcome. Deterministic for a given spec in virtual time.
+// simulated one following the problem's guide, or a recorded trace) and its feed, runs the planner,
+// and returns the outcome. Deterministic for a given spec in virtual time.
 
 #include <cstdint>
 #include <optional>
@@ -46,14 +46,14 @@ struct RunSpec {
 struct RunOutcome {
   PlannerStatus status = PlannerStatus::running;
   PlannerStats stats;
-  Path path;              ///< the planner's path (not simplified); empty unless solved
+  Path path;  ///< the planner's path (not simplified); empty unless solved
   double path_length = 0.0;
   std::string operator_description;
   double range = 0.0;
 };
 
-/// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or trace, a
-/// trace that cannot be read, a start or goal that is not valid).
+/// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or
+/// trace, a trace that cannot be read, a start or goal that is not valid).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec);
 /// The same with a checker built for the problem's scene (its counters keep counting).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker);

@@ -15,8 +15,8 @@ OperatorProfile operator_profile(std::string_view name, const SE3Space& space,
   const double per_unit = clock == OperatorClock::ticks ? 1.0 / 1000.0 : 1.0 / 4.0;
   OperatorProfile p;
   p.name = std::string(name);
-  // Poor fine motion: even an experienced operator strays by about 1% of the scene's diagonal (10 cm in
-  // a 10 m scene) and 3 degrees; an inexperienced one by three times as much.
+  // Poor fine motion: even an experienced operator strays by about 1% of the scene's diagonal (10
+  // cm in a 10 m scene) and 3 degrees; an inexperienced one by three times as much.
   if (name == "experienced") {
     p.speed = D * per_unit / 4.0;
     p.tremor_translation = 0.01 * diagonal;

@@ -1,5 +1,6 @@
 #pragma once
-// The outcome of one EXTEND (Kuffner & LaValle 2000), with the I-RRT's classes (Taix & Flavigne 2011).
+// The outcome of one EXTEND (Kuffner & LaValle 2000), with the I-RRT's classes (Taix & Flavigne
+// 2011).
 
 #include <cstdint>
 

@@ -8,8 +8,8 @@
 namespace tandem {
 namespace {
 
-constexpr std::size_t kPathLength = 200;  ///< user positions kept for PATH sampling
-constexpr std::size_t kMotionWindow = 20; ///< user positions over which F_u is measured
+constexpr std::size_t kPathLength = 200;   ///< user positions kept for PATH sampling
+constexpr std::size_t kMotionWindow = 20;  ///< user positions over which F_u is measured
 
 }  // namespace
 
@@ -18,23 +18,27 @@ IRRT::IRRT(MotionValidator& validator, const Config& start, const Config& goal,
     : Planner(validator, start, goal, settings, interaction),
       tree_(validator.space(), settings.nearest_neighbors, start),
       shot_rng_(settings.seed ^ 0x3c3c3c3c9e3779b9ULL) {
-  if (interaction == nullptr) throw std::invalid_argument("the I-RRT needs an operator (an Interaction)");
+  if (interaction == nullptr)
+    throw std::invalid_argument("the I-RRT needs an operator (an Interaction)");
   attach(tree_);
   labels_.push_back({space_.distance(start, goal)});
 }
 
 void IRRT::update_user(const OperatorState& op) {
-  if (op.sequence == last_sequence_) return;
+  if (op.sequence == last_sequence_)
+    return;
   last_sequence_ = op.sequence;
   user_path_.push_back(op.device.q_device);
-  if (user_path_.size() > kPathLength) user_path_.pop_front();
+  if (user_path_.size() > kPathLength)
+    user_path_.pop_front();
 }
 
 void IRRT::update_forces(const Config& q_user, const InteractionSettings& s) {
   // F_u: how the user moved lately.
   const std::size_t n = user_path_.size();
-  f_u_ = n > 1 ? tangent_difference(user_path_[n - std::min(n, kMotionWindow + 1)], user_path_.back())
-               : Twist::Zero();
+  f_u_ = n > 1
+             ? tangent_difference(user_path_[n - std::min(n, kMotionWindow + 1)], user_path_.back())
+             : Twist::Zero();
   // F_a: toward the labelled centre of mass of the p nearest nodes.
   tree_.nn->k_nearest(q_user, static_cast<std::size_t>(std::max(1, s.neighbours)), near_);
   const double floor = space_.max_extent() / 100.0;
@@ -47,7 +51,8 @@ void IRRT::update_forces(const Config& q_user, const InteractionSettings& s) {
     const Config& c = tree_.nodes[id];
     t += w * c.t;
     Eigen::Vector4d v = c.q.coeffs();
-    if (v.dot(q_user.q.coeffs()) < 0.0) v = -v;  // average on q_user's hemisphere
+    if (v.dot(q_user.q.coeffs()) < 0.0)
+      v = -v;  // average on q_user's hemisphere
     q += w * v;
     total += w;
   }
@@ -59,13 +64,16 @@ void IRRT::update_forces(const Config& q_user, const InteractionSettings& s) {
   }
   f_a_ = tangent_difference(q_user, com);
   f_r_ = s.force_mix * f_u_ + (1.0 - s.force_mix) * f_a_;
-  if (interaction_.guidance != nullptr) interaction_.guidance->publish({stats().iterations, f_a_});
+  if (interaction_.guidance != nullptr)
+    interaction_.guidance->publish({stats().iterations, f_a_});
 }
 
-Config IRRT::shoot(const Config& q_user, const InteractionSettings& s, NodeSource& source, bool& toward_goal) {
+Config IRRT::shoot(const Config& q_user, const InteractionSettings& s, NodeSource& source,
+                   bool& toward_goal) {
   toward_goal = rng_.uniform01() < settings_.goal_bias;
   source = NodeSource::random;
-  if (toward_goal) return goal_;
+  if (toward_goal)
+    return goal_;
   const double sigma_t = sigma_translation(s, space_);
   const double sigma_r = sigma_t / space_.translation_extent() * std::numbers::pi;
   if (s.sampling == IrrtSampling::mag_cs || s.sampling == IrrtSampling::path_cs) {
@@ -112,7 +120,8 @@ bool IRRT::iterate() {
   }
   near.collision_label = static_cast<double>(near.collisions) / (near.extensions + 1.0) *
                          std::max(0.0, 1.0 - near.covered / (near.extensions * range_));
-  if (!(toward_goal && e.status == ExtendStatus::reached)) return false;
+  if (!(toward_goal && e.status == ExtendStatus::reached))
+    return false;
   solution_ = tree_.path_from_root(e.node);
   return true;
 }

@@ -8,16 +8,20 @@
 //      F_a <- COM - q_user (the guidance pseudo-force, published back to the device);
 //      F_u <- the user's motion (displacement over the recent path);
 //      F_r <- force_mix F_u + (1 - force_mix) F_a.
-//   3. q_rand <- the goal with probability goal_bias; in +CS modes a uniform sample once every x shots
-//      (x grows with the user's motion); otherwise a Gaussian shot stretched along F_r, centred on the
-//      user (MAG) or on a point of the user's recent path (PATH).
-//   4. EXTEND(T, q_rand); the outcome is Collision (nothing added), Reached, or Obstacle (stopped short).
-//   5. Update_Labels: the extended node counts an extension, a collision, the distance covered; the new
+//   3. q_rand <- the goal with probability goal_bias; in +CS modes a uniform sample once every x
+//   shots
+//      (x grows with the user's motion); otherwise a Gaussian shot stretched along F_r, centred on
+//      the user (MAG) or on a point of the user's recent path (PATH).
+//   4. EXTEND(T, q_rand); the outcome is Collision (nothing added), Reached, or Obstacle (stopped
+//   short).
+//   5. Update_Labels: the extended node counts an extension, a collision, the distance covered; the
+//   new
 //      node gets its distance-to-goal label. Solved when an extension toward the goal reaches it.
 //
 // Labels (the paper leaves their formulas open; these are tandem's):
 //   distance label d_i = distance(node, goal);
-//   collision label c_i = collisions_i / (extensions_i + 1) x (1 - covered_i / (extensions_i x range)),
+//   collision label c_i = collisions_i / (extensions_i + 1) x (1 - covered_i / (extensions_i x
+//   range)),
 //     in [0, 1): high for nodes whose extensions fail or cover little;
 //   centre-of-mass weight w_i = (1 - c_i) / (d_i + D / 100), D the space's maximum extent.
 
@@ -55,7 +59,8 @@ class IRRT final : public Planner {
  private:
   void update_user(const OperatorState& op);
   void update_forces(const Config& q_user, const InteractionSettings& s);
-  Config shoot(const Config& q_user, const InteractionSettings& s, NodeSource& source, bool& toward_goal);
+  Config shoot(const Config& q_user, const InteractionSettings& s, NodeSource& source,
+               bool& toward_goal);
 
   Tree tree_;
   std::vector<NodeLabel> labels_;

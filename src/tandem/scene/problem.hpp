@@ -32,8 +32,8 @@ struct Problem {
   Config start;
   Config goal;
   ProblemPlannerHints hints;
-  /// A simulated operator's guide: a few keyframes placed by hand, as a person would gesture the way
-  /// (coarse; it may pass through obstacles). Empty if the problem has none.
+  /// A simulated operator's guide: a few keyframes placed by hand, as a person would gesture the
+  /// way (coarse; it may pass through obstacles). Empty if the problem has none.
   std::vector<Config> guide;
 };
 

@@ -432,14 +432,17 @@ Problem parse_scenario(std::string_view text, const std::string& source,
     Table g = top.subtable("guide");
     const toml::node& n = g.require("keyframes");
     const toml::array* keys = n.as_array();
-    if (!keys || keys->empty()) g.fail(n, "keyframes", "must be a non-empty array of tables");
+    if (!keys || keys->empty())
+      g.fail(n, "keyframes", "must be a non-empty array of tables");
     if (keys->size() > kMaxGuideKeyframes) {
-      g.fail(n, "keyframes", "has " + std::to_string(keys->size()) + " keyframes; a guide has at most " +
-                                 std::to_string(kMaxGuideKeyframes));
+      g.fail(n, "keyframes",
+             "has " + std::to_string(keys->size()) + " keyframes; a guide has at most " +
+                 std::to_string(kMaxGuideKeyframes));
     }
     for (std::size_t i = 0; i < keys->size(); ++i) {
       const toml::table* kt = (*keys)[i].as_table();
-      if (!kt) g.fail((*keys)[i], "keyframes", "must contain tables");
+      if (!kt)
+        g.fail((*keys)[i], "keyframes", "must contain tables");
       Table k(*kt, source, "guide.keyframes[" + std::to_string(i) + "]");
       Config q = read_config(k, *space);
       if (!space->satisfies_bounds(q)) {
