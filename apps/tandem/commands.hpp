@@ -15,5 +15,6 @@ Command add_plan_command(CLI::App& app);
 Command add_check_path_command(CLI::App& app);
 Command add_scenes_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
 
 }  // namespace tandem::cli

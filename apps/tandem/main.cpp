@@ -40,6 +40,8 @@ int run(int argc, char** argv) {
       tandem::cli::add_scenes_command);
   add("render", "Draw a problem and optionally a path as an SVG picture",
       tandem::cli::add_render_command);
+  add("bench", "Run an experiment (sweeps x seeds): runs, OMPL benchmark log, report",
+      tandem::cli::add_bench_command);
 
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

@@ -95,8 +95,10 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
   Termination termination;
   termination.time_limit_s = spec.time_limit;
   termination.max_iterations = spec.max_iterations;
+  termination.stop = spec.stop;
   outcome.status = planner->solve(termination);
   outcome.stats = planner->stats();
+  outcome.tree_digest = tree_digest(planner->trees());
   outcome.range = planner->range();
   if (outcome.status == PlannerStatus::solved) {
     outcome.path = planner->solution();

@@ -4,6 +4,7 @@
 // simulated one following the problem's guide, or a recorded trace) and its feed, runs the planner,
 // and returns the outcome. Deterministic for a given spec in virtual time.
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,6 +42,8 @@ struct RunSpec {
   std::uint64_t operator_period = 10;
   double time_limit = 60.0;
   std::uint64_t max_iterations = UINT64_MAX;
+  /// Stops the run (status interrupted) when set to true by another thread.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct RunOutcome {
@@ -50,6 +53,9 @@ struct RunOutcome {
   double path_length = 0.0;
   std::string operator_description;
   double range = 0.0;
+  /// tree_digest() of the planner's trees when it stopped: same spec, same digest (for runs that
+  /// end by solving or by an iteration limit; a time limit stops at a machine-dependent point).
+  std::uint64_t tree_digest = 0;
 };
 
 /// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or

@@ -1,5 +1,6 @@
 #include "tandem/planning/planner.hpp"
 
+#include <cstring>
 #include <stdexcept>
 
 #include "tandem/core/stopwatch.hpp"
@@ -44,6 +45,34 @@ std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
 std::string_view to_string(NodeSource source) {
   static constexpr std::string_view kNames[] = {"root", "random", "operator", "contact"};
   return kNames[static_cast<std::size_t>(source)];
+}
+
+std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
+  // FNV-1a, 64 bits, over the bytes of each value.
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  auto mix = [&h](const auto& value) {
+    unsigned char bytes[sizeof value];
+    std::memcpy(bytes, &value, sizeof value);
+    for (unsigned char b : bytes) {
+      h ^= b;
+      h *= 0x100000001b3ULL;
+    }
+  };
+  for (const Tree* tree : trees) {
+    mix(tree->size());
+    for (std::size_t i = 0; i < tree->size(); ++i) {
+      const Config& q = tree->nodes[i];
+      for (int k = 0; k < 3; ++k)
+        mix(q.t[k]);
+      mix(q.q.w());
+      mix(q.q.x());
+      mix(q.q.y());
+      mix(q.q.z());
+      mix(tree->parent[i]);
+      mix(tree->source[i]);
+    }
+  }
+  return h;
 }
 
 std::string_view to_string(IrrtSampling mode) {
@@ -157,7 +186,8 @@ PlannerStatus Planner::solve(const Termination& termination) {
   const double time_before = stats_.time_s;
   std::uint64_t steps = 0;
   while (status_ == PlannerStatus::running) {
-    if (interrupt_requested_.exchange(false, std::memory_order_relaxed)) {
+    if (interrupt_requested_.exchange(false, std::memory_order_relaxed) ||
+        (termination.stop != nullptr && termination.stop->load(std::memory_order_relaxed))) {
       stats_.time_s = time_before + watch.seconds();
       return PlannerStatus::interrupted;
     }

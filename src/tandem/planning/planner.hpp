@@ -95,6 +95,9 @@ struct PlannerStats {
 struct Termination {
   double time_limit_s = std::numeric_limits<double>::infinity();
   std::uint64_t max_iterations = std::numeric_limits<std::uint64_t>::max();
+  /// When set, solve() returns interrupted at the first iteration that finds it true (a flag
+  /// shared by several planners, e.g. an experiment's workers stopped by Ctrl-C).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 class Planner {

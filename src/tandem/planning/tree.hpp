@@ -68,4 +68,8 @@ struct Tree {
   double* profile_seconds = nullptr;  ///< where nearest() adds its time, if profiling
 };
 
+/// A digest of the trees' contents (every node's configuration bits, parent and source, in order):
+/// equal digests mean the same trees. For checking that a run is reproducible.
+std::uint64_t tree_digest(const std::vector<const Tree*>& trees);
+
 }  // namespace tandem
