@@ -35,7 +35,9 @@ struct BenchArgs {
 
 std::atomic<bool> g_stop{false};
 
-extern "C" void on_interrupt(int) { g_stop.store(true); }
+extern "C" void on_interrupt(int) {
+  g_stop.store(true);
+}
 
 std::string host_name() {
   char buf[256] = {};
@@ -50,7 +52,8 @@ std::string cpu_model() {
   while (std::getline(in, line)) {
     if (line.rfind("model name", 0) == 0) {
       const auto colon = line.find(':');
-      return trim(line.substr(colon + 1)) + " x " + std::to_string(std::thread::hardware_concurrency()) + "\n";
+      return trim(line.substr(colon + 1)) + " x " +
+             std::to_string(std::thread::hardware_concurrency()) + "\n";
     }
   }
   return "";
@@ -94,7 +97,8 @@ int run_bench(const BenchArgs& args) {
     const std::uint64_t seeds = args.seeds.value_or(experiment.seeds);
     for (const RunConfig& c : experiment.configs) {
       for (const RunRecord& r : all) {
-        if (r.config == c.label() && r.seed >= experiment.seed_start && r.seed < experiment.seed_start + seeds)
+        if (r.config == c.label() && r.seed >= experiment.seed_start &&
+            r.seed < experiment.seed_start + seeds)
           result.records.push_back(r);
       }
     }
@@ -122,7 +126,8 @@ int run_bench(const BenchArgs& args) {
     header.total_time_s += r.time_s;
   write_file_atomically(options.out_dir / "ompl.log",
                         format_ompl_log(experiment, problem, result.records, header));
-  const ReportFiles report = write_report(experiment, problem, result.records, options.out_dir, command);
+  const ReportFiles report =
+      write_report(experiment, problem, result.records, options.out_dir, command);
 
   std::size_t solved = 0, valid = 0;
   for (const RunRecord& r : result.records) {
@@ -155,12 +160,15 @@ Command add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1u, 256u));
   app.add_option("--seeds", args->seeds, "Seeds per configuration instead of the file's")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000}));
-  app.add_option("--allow-dir", args->allowed_dirs,
-                 "A folder the problem may read meshes and URDFs from, besides its own (repeatable)");
-  app.add_flag("--report-only", args->report_only, "Rewrite the log and report from the recorded runs");
+  app.add_option(
+      "--allow-dir", args->allowed_dirs,
+      "A folder the problem may read meshes and URDFs from, besides its own (repeatable)");
+  app.add_flag("--report-only", args->report_only,
+               "Rewrite the log and report from the recorded runs");
   app.add_flag("--quiet", args->quiet, "No progress bar");
   app.footer(
-      "Runs every configuration of the experiment's sweeps with every seed; each run ends in one line "
+      "Runs every configuration of the experiment's sweeps with every seed; each run ends in one "
+      "line "
       "of\nOUT/runs.jsonl. Runs already there are not run again: after Ctrl-C or a kill, the same "
       "command\nresumes. Then writes OUT/ompl.log (OMPL's benchmark log format) and OUT/report.md "
       "with SVG plots.\nExit 0 when done and every solution passed check-path; 1 if one did not; 2 "

@@ -173,6 +173,7 @@ int run_plan(const PlanArgs& args) {
     j["edges"] = stats.edges;
     j["nodes_by_source"] = sources_json(stats);
     j["collision_checks"] = stats.collision_checks;
+    j["tree_digest"] = format_digest(run.tree_digest);
     j["path_length"] =
         solved ? nlohmann::json(path_length(problem.space, path)) : nlohmann::json(nullptr);
     j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nlohmann::json(nullptr);
@@ -323,7 +324,8 @@ Command add_plan_command(CLI::App& app) {
       "The path is simplified (shortcuts), checked as read back from its file, then written.\n"
       "--json prints: problem, source, mode, status, solved, seed, range, extend, time_limit_s, "
       "time_s,\niterations, nodes, edges, nodes_by_source (root, random, operator, contact), "
-      "collision_checks,\npath_length, raw_path_length, path_states, simplify_time_s, out; in "
+      "collision_checks,\ntree_digest, path_length, raw_path_length, path_states, simplify_time_s, "
+      "out; in "
       "interactive modes also operator,\noperator_seed, alpha, operator_iterations, "
       "operator_time_s and the mode's own figures.\nExit 0 if solved; 1 if not solved within the "
       "time limit; 2 for bad input (including a start or\ngoal outside the bounds or in "

@@ -211,14 +211,104 @@ TEST(Cli, ReportsNoSolutionWithExitCodeOne) {
 TEST(Cli, HelpDescribesEveryCommand) {
   const test::RunResult top = run_tandem({"--help"});
   EXPECT_EQ(top.exit_code, 0);
-  for (const char* c : {"plan", "check-path", "scenes", "render"})
+  for (const char* c : {"plan", "check-path", "scenes", "render", "bench"})
     EXPECT_THAT(top.out, HasSubstr(c));
   const test::RunResult plan = run_tandem({"plan", "--help"});
   EXPECT_EQ(plan.exit_code, 0);
   for (const char* o : {"--planner", "--seed", "--time-limit", "--range", "--out", "--json"}) {
     EXPECT_THAT(plan.out, HasSubstr(o));
   }
+  for (const char* o : {"--mode", "--operator", "--alpha", "--contact-samples",
+                        "--contact-distance", "--sampling", "--sigma", "--force-mix"}) {
+    EXPECT_THAT(plan.out, HasSubstr(o));
+  }
   EXPECT_EQ(run_tandem({"check-path", "--help"}).exit_code, 0);
+  const test::RunResult bench = run_tandem({"bench", "--help"});
+  EXPECT_EQ(bench.exit_code, 0);
+  for (const char* o : {"EXPERIMENT", "--out", "--jobs", "--seeds", "--report-only"})
+    EXPECT_THAT(bench.out, HasSubstr(o));
+}
+
+const char* kGuide = R"(
+[guide]
+keyframes = [{ position = [-2, 0, 0] }, { position = [0, 0.1, 0] }, { position = [2, 0, 0] }]
+)";
+
+TEST(Cli, HumanLoopOptionsRejectNonsense) {
+  TempDir dir;
+  const auto no_guide = dir.write("w.toml", kWallScenario).string();
+  expect_bad_input({"plan", "cluttered-1", "--alpha", "0.3"}, {"--alpha", "interactive mode"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--alpha", "1.5"}, {"--alpha"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "teleport"}, {"--mode"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--operator", "clumsy"},
+                   {"--operator", "clumsy"});
+  expect_bad_input(
+      {"plan", "cluttered-1", "--mode", "interactive", "--operator", "trace:/no/such.trace"},
+      {"/no/such.trace"});
+  expect_bad_input(
+      {"plan", "cluttered-1", "--mode", "interactive-contact", "--contact-samples", "0"},
+      {"--contact-samples"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "irrt", "--sampling", "everywhere"},
+                   {"--sampling"});
+  expect_bad_input({"plan", no_guide, "--mode", "interactive"}, {"w.toml", "no [guide]"});
+  // A guide of more than 12 keyframes is a path, not a gesture.
+  std::string keys = "\n[guide]\nkeyframes = [";
+  for (int i = 0; i < 13; ++i)
+    keys += "{ position = [" + std::to_string(-2.0 + 0.3 * i) + ", 0, 0] },";
+  keys += "]\n";
+  const auto long_guide = dir.write("long.toml", std::string(kWallScenario) + keys).string();
+  expect_bad_input({"plan", long_guide}, {"long.toml", "12"});
+}
+
+TEST(Cli, InteractivePlansCountNodesBySourceAndRepeatTheirTree) {
+  TempDir dir;
+  const auto problem = dir.write("g.toml", std::string(kWallScenario) + kGuide).string();
+  std::vector<nlohmann::json> runs;
+  for (const char* seed : {"4", "4", "5"}) {
+    const test::RunResult r = run_tandem({"plan", problem, "--mode", "interactive-contact",
+                                          "--alpha", "0.3", "--seed", seed, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    runs.push_back(nlohmann::json::parse(r.out));
+  }
+  const auto& j = runs[0];
+  EXPECT_EQ(j["mode"], "interactive-contact");
+  EXPECT_DOUBLE_EQ(j["alpha"].get<double>(), 0.3);
+  int total = 0;
+  for (const char* s : {"root", "random", "operator", "contact"})
+    total += j["nodes_by_source"][s].get<int>();
+  EXPECT_EQ(total, j["nodes"].get<int>());
+  EXPECT_EQ(j["nodes_by_source"]["root"].get<int>(), 2);
+  EXPECT_GT(j["nodes_by_source"]["operator"].get<int>(), 0);
+  EXPECT_EQ(runs[0]["tree_digest"], runs[1]["tree_digest"]);
+  EXPECT_NE(runs[0]["tree_digest"], runs[2]["tree_digest"]);
+}
+
+TEST(Cli, BenchRunsAnExperimentAndRejectsBadFiles) {
+  TempDir dir;
+  dir.write("g.toml", std::string(kWallScenario) + kGuide);
+  const auto experiment = dir.write("x.toml", R"(name = "x"
+problem = "g.toml"
+seeds = 2
+time_limit = 20
+[[sweep]]
+mode = ["birrt", "interactive"]
+)");
+  const auto out = (dir.path() / "out").string();
+  const test::RunResult r = run_tandem({"bench", experiment.string(), "--out", out, "--jobs", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("4 runs recorded (4 now, 0 before), 4 solved, 4 solutions valid"));
+  for (const char* f : {"runs.jsonl", "ompl.log", "report.md", "x-time.svg", "x-nodes.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / f)) << f;
+  const test::RunResult again = run_tandem({"bench", experiment.string(), "--out", out});
+  EXPECT_THAT(again.out, HasSubstr("(0 now, 4 before)"));
+  EXPECT_EQ(run_tandem({"bench", experiment.string(), "--out", out, "--report-only"}).exit_code, 0);
+
+  expect_bad_input({"bench", (dir.path() / "none.toml").string()}, {"none.toml"});
+  const auto bad = dir.write("bad.toml", "name = \"b\"\nproblem = \"g.toml\"\n[base]\nalpha = 7\n");
+  expect_bad_input({"bench", bad.string(), "--out", out}, {"bad.toml:3", "alpha"});
+  expect_bad_input(
+      {"bench", experiment.string(), "--out", (dir.path() / "fresh").string(), "--report-only"},
+      {"runs.jsonl", "run the experiment first"});
 }
 
 TEST(Cli, BuiltinScenesCanBeListedAndExported) {

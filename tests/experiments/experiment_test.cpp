@@ -19,7 +19,9 @@
 namespace tandem {
 namespace {
 
-Experiment parse(const std::string& text) { return parse_experiment(text, "x.toml", "."); }
+Experiment parse(const std::string& text) {
+  return parse_experiment(text, "x.toml", ".");
+}
 
 std::string error_of(const std::string& text) {
   try {
@@ -55,7 +57,8 @@ columns = ["alpha"]
   EXPECT_EQ(x.seed_start, 7u);
   EXPECT_DOUBLE_EQ(x.time_limit, 12.5);
   ASSERT_EQ(x.configs.size(), 7u);
-  EXPECT_EQ(x.configs[0].label(), "interactive-contact alpha=0.8 contact_samples=1 operator=inexperienced");
+  EXPECT_EQ(x.configs[0].label(),
+            "interactive-contact alpha=0.8 contact_samples=1 operator=inexperienced");
   EXPECT_EQ(x.configs[6].label(), "birrt operator=inexperienced");
   const RunSpec s = x.configs[5].spec(3, 12.5);
   EXPECT_EQ(s.mode, PlannerMode::interactive_contact);
@@ -67,7 +70,8 @@ columns = ["alpha"]
 }
 
 TEST(ExperimentFile, TheProblemsHintsFillWhatAConfigurationLeavesOut) {
-  const Experiment x = parse("name = \"t\"\nproblem = \"p\"\n[[sweep]]\nmode = [\"birrt\", \"rrt\"]\n");
+  const Experiment x =
+      parse("name = \"t\"\nproblem = \"p\"\n[[sweep]]\nmode = [\"birrt\", \"rrt\"]\n");
   ProblemPlannerHints hints;
   hints.extend = "last-valid";
   hints.range = {{"birrt", 0.7}, {"rrt", 0.3}};
@@ -87,10 +91,12 @@ TEST(ExperimentFile, FaultsNameTheFileAndLine) {
       {head + "colour = 3\n", "x.toml:3: unknown key 'colour'"},
       {head + "[base]\nalfa = 0.5\n", "x.toml:4: unknown run parameter 'alfa'"},
       {head + "[base]\nalpha = \"high\"\n", "x.toml:4: alpha must be a number"},
-      {head + "[[sweep]]\nalpha = [0.5, 1.5]\n", "x.toml:3: configuration alpha=1.5: alpha: must be in [0, 1]"},
+      {head + "[[sweep]]\nalpha = [0.5, 1.5]\n",
+       "x.toml:3: configuration alpha=1.5: alpha: must be in [0, 1]"},
       {head + "[[sweep]]\nalpha = []\n", "x.toml:4: alpha has no values"},
       {head + "[[sweep]]\nmode = \"fast\"\n", "unknown mode 'fast'"},
-      {head + "[[sweep]]\ncontact_samples = -2\n", "x.toml:4: contact_samples must be a non-negative"},
+      {head + "[[sweep]]\ncontact_samples = -2\n",
+       "x.toml:4: contact_samples must be a non-negative"},
       {head + "seeds = 0\n", "x.toml:3: seeds must be a positive integer"},
       {head + "time_limit = -1\n", "x.toml:3: time_limit must be a positive number"},
       {"name = \"../evil\"\nproblem = \"p\"\n", "x.toml:1: name may hold"},
@@ -218,7 +224,8 @@ TEST(BenchRunner, RunsEverythingChecksTheSolutionsAndResumesWhereItStopped) {
   ASSERT_EQ(resumed.records.size(), 6u);
   for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(resumed.records[i].key(), first.records[i].key());
-    EXPECT_EQ(resumed.records[i].tree_digest, first.records[i].tree_digest) << first.records[i].key();
+    EXPECT_EQ(resumed.records[i].tree_digest, first.records[i].tree_digest)
+        << first.records[i].key();
     EXPECT_EQ(resumed.records[i].nodes, first.records[i].nodes);
   }
   EXPECT_EQ(read_records(runs).size(), 6u);
@@ -283,11 +290,12 @@ TEST(OmplLog, OmplsOwnScriptReadsItIntoTheDatabasePlannerArenaUses) {
                           " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   // Read the database back with Python's sqlite3 (what Planner Arena's loader uses).
-  const std::string query = "python3 -c \"import sqlite3; c = sqlite3.connect('" + db +
-                            "'); print(c.execute('select count(*), sum(solved), sum(correct_solution), "
-                            "min(status) from runs').fetchone()); print(c.execute('select count(*) "
-                            "from plannerConfigs').fetchone()[0])\" > " +
-                            (dir.path() / "q.txt").string();
+  const std::string query =
+      "python3 -c \"import sqlite3; c = sqlite3.connect('" + db +
+      "'); print(c.execute('select count(*), sum(solved), sum(correct_solution), "
+      "min(status) from runs').fetchone()); print(c.execute('select count(*) "
+      "from plannerConfigs').fetchone()[0])\" > " +
+      (dir.path() / "q.txt").string();
   ASSERT_EQ(std::system(query.c_str()), 0);
   EXPECT_EQ(read_text_file(dir.path() / "q.txt"), "(4, 4, 4, 6)\n2\n");
 }
@@ -314,7 +322,8 @@ TEST(Report, TablesHaveARowPerConfigurationAndMarkCensoredMedians) {
     records.push_back(r);
   }
   f.experiment.report.paper = {{"birrt", "2h45m"}};
-  const std::string md = format_report(f.experiment, f.problem, records, "tandem bench gap.toml", {"a.svg", "b.svg"});
+  const std::string md =
+      format_report(f.experiment, f.problem, records, "tandem bench gap.toml", {"a.svg", "b.svg"});
   EXPECT_NE(md.find("| birrt | 0/3 (0–56%) | > 30 | 1000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| interactive-contact | 3/3 (44–100%) | 1 | 10 |"), std::string::npos) << md;
   EXPECT_NE(md.find("2h45m"), std::string::npos);

@@ -1,7 +1,6 @@
 #include "tandem/experiments/bench_runner.hpp"
 
 #include <algorithm>
-#include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -22,12 +21,6 @@ namespace tandem {
 namespace {
 
 constexpr const char* kRunsFile = "runs.jsonl";
-
-std::string hex64(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
-  return buf;
-}
 
 std::string duration_text(double s) {
   if (!std::isfinite(s) || s < 0.0)
@@ -75,10 +68,13 @@ class Recorder {
       return;
     const double elapsed = watch_.seconds();
     const std::size_t left = total_ - done_;
-    const double eta = ran_ == 0 ? std::nan("") : elapsed / static_cast<double>(ran_) * static_cast<double>(left);
+    const double eta =
+        ran_ == 0 ? std::nan("") : elapsed / static_cast<double>(ran_) * static_cast<double>(left);
     constexpr int kWidth = 30;
     const int filled =
-        total_ == 0 ? kWidth : static_cast<int>(kWidth * static_cast<double>(done_) / static_cast<double>(total_));
+        total_ == 0
+            ? kWidth
+            : static_cast<int>(kWidth * static_cast<double>(done_) / static_cast<double>(total_));
     std::ostringstream line;
     line << '[' << std::string(static_cast<std::size_t>(filled), '#')
          << std::string(static_cast<std::size_t>(kWidth - filled), '.') << "] " << done_ << '/'
@@ -135,7 +131,7 @@ RunRecord make_record(const Problem& problem, const RunConfig& config, std::uint
   r.path_length = outcome.path_length;
   r.operator_iterations = s.operator_iterations;
   r.contact_entries = s.contact_entries;
-  r.tree_digest = hex64(outcome.tree_digest);
+  r.tree_digest = format_digest(outcome.tree_digest);
   return r;
 }
 
@@ -222,8 +218,9 @@ std::optional<RunRecord> parse_record(const std::string& line) {
     r.edges = j.at("edges").get<std::size_t>();
     r.collision_checks = j.at("collision_checks").get<std::uint64_t>();
     for (std::size_t k = 0; k < kNodeSources; ++k) {
-      r.nodes_by_source[k] =
-          j.at("nodes_by_source").at(std::string(to_string(static_cast<NodeSource>(k)))).get<std::size_t>();
+      r.nodes_by_source[k] = j.at("nodes_by_source")
+                                 .at(std::string(to_string(static_cast<NodeSource>(k))))
+                                 .get<std::size_t>();
     }
     r.path_length = j.at("path_length").get<double>();
     r.operator_iterations = j.at("operator_iterations").get<std::uint64_t>();
@@ -330,8 +327,8 @@ BenchResult run_experiment(const Experiment& experiment, const Problem& problem,
         const RunOutcome outcome = execute_run(problem, spec, checker);
         if (outcome.status == PlannerStatus::interrupted)
           break;
-        const bool valid = outcome.status == PlannerStatus::solved &&
-                           !outcome.path.empty() && check_path(outcome.path, validator).valid;
+        const bool valid = outcome.status == PlannerStatus::solved && !outcome.path.empty() &&
+                           check_path(outcome.path, validator).valid;
         recorder.record(make_record(problem, config, job.seed, time_limit, outcome, valid));
       }
     } catch (...) {

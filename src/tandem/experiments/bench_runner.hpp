@@ -31,9 +31,9 @@ struct RunRecord {
   std::map<std::string, std::string> params;  ///< the configuration's values, as text
   std::uint64_t seed = 0;
   double time_limit_s = 0.0;
-  std::string status;        ///< to_string(PlannerStatus)
+  std::string status;  ///< to_string(PlannerStatus)
   bool solved = false;
-  bool path_valid = false;   ///< the solution passed check_path (false when not solved)
+  bool path_valid = false;  ///< the solution passed check_path (false when not solved)
   double time_s = 0.0;
   std::uint64_t iterations = 0;
   std::size_t nodes = 0;
@@ -43,7 +43,7 @@ struct RunRecord {
   double path_length = 0.0;  ///< of the planner's (unsimplified) path; 0 when not solved
   std::uint64_t operator_iterations = 0;
   std::uint64_t contact_entries = 0;
-  std::string tree_digest;   ///< hex of RunOutcome::tree_digest
+  std::string tree_digest;  ///< hex of RunOutcome::tree_digest
 
   /// Identifies the run within an experiment: configuration and seed.
   std::string key() const { return config + " #" + std::to_string(seed); }

@@ -59,9 +59,9 @@ const std::map<std::string, std::string>& run_parameter_kinds();
 
 struct ReportSpec {
   std::string title;
-  std::string rows;                      ///< parameter along the table's rows and the plots' x axis
-  std::vector<std::string> columns;      ///< parameters whose values make separate series
-  std::string panels;                    ///< parameter whose values make separate tables and plots
+  std::string rows;                  ///< parameter along the table's rows and the plots' x axis
+  std::vector<std::string> columns;  ///< parameters whose values make separate series
+  std::string panels;                ///< parameter whose values make separate tables and plots
   std::map<std::string, std::string> paper;  ///< row value -> the paper's figures, quoted
 };
 

@@ -10,8 +10,9 @@ namespace {
 /// OMPL 1.5's ompl::base::PlannerStatus::StatusType, in order, as its Benchmark writes them.
 const std::vector<std::string>& status_names() {
   static const std::vector<std::string> kNames = {
-      "Unknown status", "Invalid start", "Invalid goal", "Unrecognized goal type", "Timeout",
-      "Approximate solution", "Exact solution", "Crash", "Abort"};
+      "Unknown status",         "Invalid start", "Invalid goal",
+      "Unrecognized goal type", "Timeout",       "Approximate solution",
+      "Exact solution",         "Crash",         "Abort"};
   return kNames;
 }
 
@@ -101,13 +102,22 @@ std::string format_ompl_log(const Experiment& experiment, const Problem& problem
     planners += by_config.count(c.label());
   o << planners << " planners\n";
 
-  static const char* kProperties[] = {
-      "time REAL",          "solved BOOLEAN",        "status ENUM",
-      "approximate solution BOOLEAN", "correct solution BOOLEAN", "solution length REAL",
-      "graph states INTEGER", "graph motions INTEGER", "iterations INTEGER",
-      "collision checks INTEGER", "seed INTEGER", "nodes random INTEGER",
-      "nodes operator INTEGER", "nodes contact INTEGER", "operator iterations INTEGER",
-      "contact entries INTEGER"};
+  static const char* kProperties[] = {"time REAL",
+                                      "solved BOOLEAN",
+                                      "status ENUM",
+                                      "approximate solution BOOLEAN",
+                                      "correct solution BOOLEAN",
+                                      "solution length REAL",
+                                      "graph states INTEGER",
+                                      "graph motions INTEGER",
+                                      "iterations INTEGER",
+                                      "collision checks INTEGER",
+                                      "seed INTEGER",
+                                      "nodes random INTEGER",
+                                      "nodes operator INTEGER",
+                                      "nodes contact INTEGER",
+                                      "operator iterations INTEGER",
+                                      "contact entries INTEGER"};
   for (const RunConfig& c : experiment.configs) {
     auto it = by_config.find(c.label());
     if (it == by_config.end())
@@ -121,7 +131,9 @@ std::string format_ompl_log(const Experiment& experiment, const Problem& problem
       o << p << '\n';
     o << it->second.size() << " runs\n";
     for (const RunRecord* r : it->second) {
-      const auto src = [&](NodeSource s) { return r->nodes_by_source[static_cast<std::size_t>(s)]; };
+      const auto src = [&](NodeSource s) {
+        return r->nodes_by_source[static_cast<std::size_t>(s)];
+      };
       o << real(r->time_s) << "; " << (r->solved ? 1 : 0) << "; " << status_index(r->status)
         << "; 0; " << (r->path_valid ? 1 : 0) << "; " << (r->solved ? real(r->path_length) : "")
         << "; " << r->nodes << "; " << r->edges << "; " << r->iterations << "; "

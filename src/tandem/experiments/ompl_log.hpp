@@ -16,10 +16,10 @@
 namespace tandem {
 
 struct OmplLogHeader {
-  std::string version;    ///< tandem's version
+  std::string version;  ///< tandem's version
   std::string hostname;
-  std::string date;       ///< when the experiment was (last) run
-  std::string cpuinfo;    ///< may be empty
+  std::string date;     ///< when the experiment was (last) run
+  std::string cpuinfo;  ///< may be empty
   double total_time_s = 0.0;
 };
 

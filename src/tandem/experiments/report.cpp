@@ -61,9 +61,10 @@ Summary summarise(const std::vector<const RunRecord*>& runs) {
     edges.push_back(static_cast<double>(r->edges));
     checks.push_back(static_cast<double>(r->collision_checks));
     for (std::size_t k = 0; k < kNodeSources; ++k) {
-      s.share[k] += r->nodes == 0 ? 0.0
-                                  : static_cast<double>(r->nodes_by_source[k]) /
-                                        static_cast<double>(r->nodes) / static_cast<double>(runs.size());
+      s.share[k] += r->nodes == 0
+                        ? 0.0
+                        : static_cast<double>(r->nodes_by_source[k]) /
+                              static_cast<double>(r->nodes) / static_cast<double>(runs.size());
     }
   }
   s.success = success_interval(s.solved, s.runs);
@@ -97,8 +98,9 @@ Layout layout_of(const Experiment& x) {
       l.varying.push_back(n);
   }
   // The mode first, as the papers' tables read; then rows, series, panels.
-  std::stable_sort(l.varying.begin(), l.varying.end(),
-                   [](const std::string& a, const std::string& b) { return a == "mode" && b != "mode"; });
+  std::stable_sort(
+      l.varying.begin(), l.varying.end(),
+      [](const std::string& a, const std::string& b) { return a == "mode" && b != "mode"; });
   l.rows = !x.report.rows.empty() ? x.report.rows : (l.varying.empty() ? "" : l.varying.front());
   if (!x.report.panels.empty() &&
       std::find(l.varying.begin(), l.varying.end(), x.report.panels) != l.varying.end()) {
@@ -143,8 +145,9 @@ void add_unique(std::vector<T>& v, const T& x) {
 
 }  // namespace
 
-std::string svg_plot(const std::string& title, const std::string& x_title, const std::string& y_title,
-                     const std::vector<std::string>& x_labels, const std::vector<PlotSeries>& series) {
+std::string svg_plot(const std::string& title, const std::string& x_title,
+                     const std::string& y_title, const std::vector<std::string>& x_labels,
+                     const std::vector<PlotSeries>& series) {
   constexpr double W = 640, H = 400, left = 70, right = 180, top = 40, bottom = 60;
   const double pw = W - left - right, ph = H - top - bottom;
   double lo = INFINITY, hi = -INFINITY;
@@ -163,9 +166,13 @@ std::string svg_plot(const std::string& title, const std::string& x_title, const
   double l0 = std::floor(std::log10(lo)), l1 = std::ceil(std::log10(hi));
   if (l1 <= l0)
     l1 = l0 + 1;
-  auto y = [&](double v) { return top + ph * (1.0 - (std::log10(std::max(v, lo)) - l0) / (l1 - l0)); };
+  auto y = [&](double v) {
+    return top + ph * (1.0 - (std::log10(std::max(v, lo)) - l0) / (l1 - l0));
+  };
   auto x = [&](std::size_t i) {
-    return left + (x_labels.size() <= 1 ? pw / 2 : pw * static_cast<double>(i) / static_cast<double>(x_labels.size() - 1));
+    return left + (x_labels.size() <= 1
+                       ? pw / 2
+                       : pw * static_cast<double>(i) / static_cast<double>(x_labels.size() - 1));
   };
   static const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
                                    "#9467bd", "#8c564b", "#e377c2", "#17becf"};
@@ -173,12 +180,14 @@ std::string svg_plot(const std::string& title, const std::string& x_title, const
   o.setf(std::ios::fixed);
   o.precision(1);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  o << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">" << xml(title) << "</text>\n";
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" "
+       "fill=\"white\"/>\n";
+  o << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">" << xml(title)
+    << "</text>\n";
   for (double e = l0; e <= l1 + 1e-9; e += 1.0) {
     const double v = std::pow(10.0, e);
-    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << y(v) << "\" y2=\"" << y(v)
-      << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << y(v) + 4
+    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << y(v) << "\" y2=\""
+      << y(v) << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << y(v) + 4
       << "\" text-anchor=\"end\">" << number(v, 6) << "</text>\n";
   }
   for (std::size_t i = 0; i < x_labels.size(); ++i) {
@@ -187,8 +196,8 @@ std::string svg_plot(const std::string& title, const std::string& x_title, const
   }
   o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
     << "\" fill=\"none\" stroke=\"#333\"/>\n";
-  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << H - 15 << "\" text-anchor=\"middle\">" << xml(x_title)
-    << "</text>\n<text transform=\"translate(18 " << top + ph / 2
+  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << H - 15 << "\" text-anchor=\"middle\">"
+    << xml(x_title) << "</text>\n<text transform=\"translate(18 " << top + ph / 2
     << ") rotate(-90)\" text-anchor=\"middle\">" << xml(y_title) << " (log scale)</text>\n";
   for (std::size_t s = 0; s < series.size(); ++s) {
     const char* colour = kColours[s % std::size(kColours)];
@@ -197,13 +206,14 @@ std::string svg_plot(const std::string& title, const std::string& x_title, const
       const Interval& p = series[s].points[i];
       if (p.value <= 0.0)
         continue;
-      const double dx = (static_cast<double>(s) - static_cast<double>(series.size() - 1) / 2.0) * 4.0;
+      const double dx =
+          (static_cast<double>(s) - static_cast<double>(series.size() - 1) / 2.0) * 4.0;
       if (p.has_interval) {
         o << "<line x1=\"" << x(i) + dx << "\" x2=\"" << x(i) + dx << "\" y1=\"" << y(p.low)
           << "\" y2=\"" << y(p.high) << "\" stroke=\"" << colour << "\"/>\n";
       }
-      o << "<circle cx=\"" << x(i) + dx << "\" cy=\"" << y(p.value) << "\" r=\"3\" fill=\"" << colour
-        << "\"/>\n";
+      o << "<circle cx=\"" << x(i) + dx << "\" cy=\"" << y(p.value) << "\" r=\"3\" fill=\""
+        << colour << "\"/>\n";
       std::ostringstream pt;
       pt.setf(std::ios::fixed);
       pt.precision(1);
@@ -211,9 +221,10 @@ std::string svg_plot(const std::string& title, const std::string& x_title, const
       poly += pt.str();
     }
     o << "<polyline points=\"" << poly << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
-    o << "<rect x=\"" << left + pw + 12 << "\" y=\"" << top + 18.0 * static_cast<double>(s) << "\" width=\"10\" height=\"10\" fill=\""
-      << colour << "\"/>\n<text x=\"" << left + pw + 26 << "\" y=\"" << top + 9 + 18.0 * static_cast<double>(s)
-      << "\">" << xml(series[s].name) << "</text>\n";
+    o << "<rect x=\"" << left + pw + 12 << "\" y=\"" << top + 18.0 * static_cast<double>(s)
+      << "\" width=\"10\" height=\"10\" fill=\"" << colour << "\"/>\n<text x=\"" << left + pw + 26
+      << "\" y=\"" << top + 9 + 18.0 * static_cast<double>(s) << "\">" << xml(series[s].name)
+      << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();
@@ -242,7 +253,8 @@ std::string format_report(const Experiment& x, const Problem& problem,
     << " configurations; " << records.size() << " runs";
   if (!seeds.empty())
     o << " (seeds " << *seeds.begin() << "–" << *seeds.rbegin() << ")";
-  o << "; time limit " << number(x.time_limit) << " s per run. Produced by `" << command << "`.\n\n";
+  o << "; time limit " << number(x.time_limit) << " s per run. Produced by `" << command
+    << "`.\n\n";
   o << "Medians over the seeds, with 95% confidence intervals in brackets (order statistics; "
        "none for fewer than 6 runs). A run that did not solve counts at the time limit, and a "
        "median time marked > is such a run. Solved: share of runs, with its 95% Wilson interval. "
@@ -265,7 +277,8 @@ std::string format_report(const Experiment& x, const Problem& problem,
       if (n != l.panels)
         o << ' ' << n << " |";
     }
-    o << " solved | time s | nodes | edges | collision checks | nodes random / operator / contact |";
+    o << " solved | time s | nodes | edges | collision checks | nodes random / operator / contact "
+         "|";
     if (quote_paper)
       o << " paper |";
     o << "\n|";
@@ -294,9 +307,10 @@ std::string format_report(const Experiment& x, const Problem& problem,
       char solved_text[96];
       std::snprintf(solved_text, sizeof solved_text, "%zu/%zu (%.0f–%.0f%%)", s.solved, s.runs,
                     100 * s.success.low, 100 * s.success.high);
-      o << ' ' << solved_text << " | " << (s.time_censored ? "> " : "") << with_interval(s.time, false)
-        << " | " << with_interval(s.nodes, true) << " | " << number(std::round(s.edges.value), 6) << " | "
-        << number(std::round(s.checks.value), 6) << " | " << share << " |";
+      o << ' ' << solved_text << " | " << (s.time_censored ? "> " : "")
+        << with_interval(s.time, false) << " | " << with_interval(s.nodes, true) << " | "
+        << number(std::round(s.edges.value), 6) << " | " << number(std::round(s.checks.value), 6)
+        << " | " << share << " |";
       if (quote_paper) {
         auto p = x.report.paper.find(l.rows.empty() ? "" : c.value_text(l.rows));
         o << ' ' << (p == x.report.paper.end() ? "" : p->second) << " |";
@@ -312,8 +326,8 @@ std::string format_report(const Experiment& x, const Problem& problem,
 }
 
 ReportFiles write_report(const Experiment& x, const Problem& problem,
-                         const std::vector<RunRecord>& records, const std::filesystem::path& out_dir,
-                         const std::string& command) {
+                         const std::vector<RunRecord>& records,
+                         const std::filesystem::path& out_dir, const std::string& command) {
   const Layout l = layout_of(x);
   std::map<std::string, std::vector<const RunRecord*>> by_config;
   for (const RunRecord& r : records)
@@ -331,7 +345,8 @@ ReportFiles write_report(const Experiment& x, const Problem& problem,
     for (const RunConfig& c : x.configs) {
       if (!l.panels.empty() && c.value_text(l.panels) != panel)
         continue;
-      add_unique(xs, l.rows.empty() ? std::string("all") : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows)));
+      add_unique(xs, l.rows.empty() ? std::string("all")
+                                    : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows)));
       add_unique(keys, series_key(c, l));
     }
     std::vector<PlotSeries> time(keys.size()), nodes(keys.size());
@@ -346,20 +361,24 @@ ReportFiles write_report(const Experiment& x, const Problem& problem,
       if (it == by_config.end())
         continue;
       const Summary s = summarise(it->second);
-      const std::string xv = l.rows.empty() ? std::string("all") : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows));
+      const std::string xv = l.rows.empty()
+                                 ? std::string("all")
+                                 : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows));
       const auto xi = static_cast<std::size_t>(std::find(xs.begin(), xs.end(), xv) - xs.begin());
-      const auto ki = static_cast<std::size_t>(std::find(keys.begin(), keys.end(), series_key(c, l)) - keys.begin());
+      const auto ki = static_cast<std::size_t>(
+          std::find(keys.begin(), keys.end(), series_key(c, l)) - keys.begin());
       time[ki].points[xi] = s.time;
       nodes[ki].points[xi] = s.nodes;
     }
     const std::string suffix = l.panels.empty() ? "" : "-" + file_safe(l.panels + "=" + panel);
-    const std::string heading = x.report.title + (l.panels.empty() ? "" : " (" + l.panels + " = " + panel + ")");
+    const std::string heading =
+        x.report.title + (l.panels.empty() ? "" : " (" + l.panels + " = " + panel + ")");
     const std::string x_title = l.rows.empty() ? "" : l.rows;
     for (int k = 0; k < 2; ++k) {
       const std::string name = file_safe(x.name) + suffix + (k == 0 ? "-time.svg" : "-nodes.svg");
-      write_file_atomically(out_dir / name,
-                            svg_plot(heading, x_title, k == 0 ? "median time, s" : "median nodes", xs,
-                                     k == 0 ? time : nodes));
+      write_file_atomically(
+          out_dir / name, svg_plot(heading, x_title, k == 0 ? "median time, s" : "median nodes", xs,
+                                   k == 0 ? time : nodes));
       files.plots.push_back(out_dir / name);
       names.push_back(name);
     }

@@ -28,8 +28,8 @@ struct ReportFiles {
 /// Writes OUT/report.md and OUT/<name>-*.svg. `command` is how the data were produced (quoted in
 /// the report).
 ReportFiles write_report(const Experiment& experiment, const Problem& problem,
-                         const std::vector<RunRecord>& records, const std::filesystem::path& out_dir,
-                         const std::string& command);
+                         const std::vector<RunRecord>& records,
+                         const std::filesystem::path& out_dir, const std::string& command);
 
 /// The Markdown text alone (for tests); plot_files are linked from it.
 std::string format_report(const Experiment& experiment, const Problem& problem,
@@ -43,7 +43,8 @@ struct PlotSeries {
 };
 
 /// A line plot with categorical x labels, a logarithmic y axis and interval whiskers.
-std::string svg_plot(const std::string& title, const std::string& x_title, const std::string& y_title,
-                     const std::vector<std::string>& x_labels, const std::vector<PlotSeries>& series);
+std::string svg_plot(const std::string& title, const std::string& x_title,
+                     const std::string& y_title, const std::vector<std::string>& x_labels,
+                     const std::vector<PlotSeries>& series);
 
 }  // namespace tandem

@@ -1,5 +1,6 @@
 #include "tandem/planning/planner.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -73,6 +74,12 @@ std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
     }
   }
   return h;
+}
+
+std::string format_digest(std::uint64_t digest) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(digest));
+  return buf;
 }
 
 std::string_view to_string(IrrtSampling mode) {

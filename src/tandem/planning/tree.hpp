@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -71,5 +72,7 @@ struct Tree {
 /// A digest of the trees' contents (every node's configuration bits, parent and source, in order):
 /// equal digests mean the same trees. For checking that a run is reproducible.
 std::uint64_t tree_digest(const std::vector<const Tree*>& trees);
+/// A digest as 16 hexadecimal digits.
+std::string format_digest(std::uint64_t digest);
 
 }  // namespace tandem
