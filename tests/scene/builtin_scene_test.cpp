@@ -50,15 +50,29 @@ TEST(ClutteredEnvironment1, MatchesThePapersDescription) {
   EXPECT_NEAR(inner_gap("red-wall-left", "red-wall-right"), 0.75, 1e-12);
 }
 
-TEST(ClutteredEnvironment1, ShippedPathPassesCheckPath) {
-  const Problem p = load_problem("cluttered-1");
-  const Path path = read_path_file(test::source_dir() / "scenes" / "cluttered-1.path", p.space);
-  CollisionChecker checker(p.scene);
-  MotionValidator validator(p.space, checker);
-  const PathCheck check = check_path(path, validator);
-  EXPECT_TRUE(check.valid) << check.describe();
-  EXPECT_LT(p.space.distance(path.front(), p.start), 1e-9);
-  EXPECT_LT(p.space.distance(path.back(), p.goal), 1e-9);
+TEST(BuiltinScenes, EachIsSolvedByItsHandMadePathAndHasAGuide) {
+  for (const auto& scene : builtin_scenes()) {
+    const std::string name(scene.name);
+    const Problem p = load_problem(name);
+    const Path path = read_path_file(test::source_dir() / "scenes" / (name + ".path"), p.space);
+    CollisionChecker checker(p.scene);
+    MotionValidator validator(p.space, checker);
+    const PathCheck check = check_path(path, validator);
+    EXPECT_TRUE(check.valid) << name << ": " << check.describe();
+    EXPECT_LT(p.space.distance(path.front(), p.start), 1e-5) << name;
+    EXPECT_LT(p.space.distance(path.back(), p.goal), 1e-5) << name;
+    // The simulated operators' guide: a gesture from the start to the goal, not a path.
+    ASSERT_GE(p.guide.size(), 2u) << name;
+    EXPECT_LE(p.guide.size(), kMaxGuideKeyframes) << name;
+    EXPECT_LT(p.space.distance(p.guide.front(), p.start), 1e-9) << name;
+    EXPECT_LT(p.space.distance(p.guide.back(), p.goal), 1e-9) << name;
+  }
+}
+
+TEST(BuiltinScenes, ThePapersScenesAreAllThere) {
+  for (const char* name : {"cluttered-1", "cluttered-2", "maze", "labyrinth-2d"})
+    EXPECT_NO_THROW((void)load_problem(name)) << name;
+  EXPECT_TRUE(load_problem("labyrinth-2d").space.planar());
 }
 
 TEST(ClutteredEnvironment1, ThePartSlidesUnderTheObliqueBarsLowEnd) {
