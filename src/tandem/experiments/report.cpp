@@ -143,6 +143,46 @@ void add_unique(std::vector<T>& v, const T& x) {
     v.push_back(x);
 }
 
+/// The experiment's configurations grouped for the report: the panels, and in each panel the
+/// configurations that have runs, with their summaries.
+struct Grouped {
+  Layout layout;
+  std::vector<std::string> panels;
+  std::map<std::string, std::vector<const RunRecord*>> by_config;
+
+  Grouped(const Experiment& x, const std::vector<RunRecord>& records) : layout(layout_of(x)) {
+    for (const RunRecord& r : records)
+      by_config[r.config].push_back(&r);
+    if (layout.panels.empty()) {
+      panels.emplace_back();
+    } else {
+      for (const RunConfig& c : x.configs)
+        add_unique(panels, c.value_text(layout.panels));
+    }
+  }
+
+  std::vector<std::pair<const RunConfig*, Summary>> rows(const Experiment& x,
+                                                         const std::string& panel) const {
+    std::vector<std::pair<const RunConfig*, Summary>> out;
+    for (const RunConfig& c : x.configs) {
+      if (!layout.panels.empty() && c.value_text(layout.panels) != panel)
+        continue;
+      auto it = by_config.find(c.label());
+      if (it != by_config.end())
+        out.emplace_back(&c, summarise(it->second));
+    }
+    return out;
+  }
+};
+
+/// A configuration's value of the x-axis parameter, as the plots label it.
+std::string x_value(const RunConfig& c, const Layout& l) {
+  if (l.rows.empty())
+    return "all";
+  const std::string v = c.value_text(l.rows);
+  return v.empty() ? "—" : v;
+}
+
 }  // namespace
 
 std::string svg_plot(const std::string& title, const std::string& x_title,
@@ -233,10 +273,8 @@ std::string svg_plot(const std::string& title, const std::string& x_title,
 std::string format_report(const Experiment& x, const Problem& problem,
                           const std::vector<RunRecord>& records, const std::string& command,
                           const std::vector<std::string>& plot_files) {
-  const Layout l = layout_of(x);
-  std::map<std::string, std::vector<const RunRecord*>> by_config;
-  for (const RunRecord& r : records)
-    by_config[r.config].push_back(&r);
+  const Grouped g(x, records);
+  const Layout& l = g.layout;
 
   std::size_t solved = 0, valid = 0;
   std::set<std::uint64_t> seeds;
@@ -261,15 +299,9 @@ std::string format_report(const Experiment& x, const Problem& problem,
        "Every solution was checked state by state and motion by motion (check-path): "
     << valid << " of " << solved << " valid.\n\n";
 
-  std::vector<std::string> panels{""};
-  if (!l.panels.empty()) {
-    panels.clear();
-    for (const RunConfig& c : x.configs)
-      add_unique(panels, c.value_text(l.panels));
-  }
   const bool quote_paper = !x.report.paper.empty();
   std::size_t plot = 0;
-  for (const std::string& panel : panels) {
+  for (const std::string& panel : g.panels) {
     if (!l.panels.empty())
       o << "## " << l.panels << " = " << panel << "\n\n";
     o << '|';
@@ -287,13 +319,8 @@ std::string format_report(const Experiment& x, const Problem& problem,
         o << " --- |";
     }
     o << " ---: | ---: | ---: | ---: | ---: | ---: |" << (quote_paper ? " --- |" : "") << '\n';
-    for (const RunConfig& c : x.configs) {
-      if (!l.panels.empty() && c.value_text(l.panels) != panel)
-        continue;
-      auto it = by_config.find(c.label());
-      if (it == by_config.end())
-        continue;
-      const Summary s = summarise(it->second);
+    for (const auto& [config, s] : g.rows(x, panel)) {
+      const RunConfig& c = *config;
       o << '|';
       for (const std::string& n : l.varying) {
         if (n != l.panels)
@@ -328,45 +355,27 @@ std::string format_report(const Experiment& x, const Problem& problem,
 ReportFiles write_report(const Experiment& x, const Problem& problem,
                          const std::vector<RunRecord>& records,
                          const std::filesystem::path& out_dir, const std::string& command) {
-  const Layout l = layout_of(x);
-  std::map<std::string, std::vector<const RunRecord*>> by_config;
-  for (const RunRecord& r : records)
-    by_config[r.config].push_back(&r);
-  std::vector<std::string> panels{""};
-  if (!l.panels.empty()) {
-    panels.clear();
-    for (const RunConfig& c : x.configs)
-      add_unique(panels, c.value_text(l.panels));
-  }
+  const Grouped g(x, records);
+  const Layout& l = g.layout;
   ReportFiles files;
   std::vector<std::string> names;
-  for (const std::string& panel : panels) {
+  for (const std::string& panel : g.panels) {
+    const auto rows = g.rows(x, panel);
     std::vector<std::string> xs, keys;
-    for (const RunConfig& c : x.configs) {
-      if (!l.panels.empty() && c.value_text(l.panels) != panel)
-        continue;
-      add_unique(xs, l.rows.empty() ? std::string("all")
-                                    : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows)));
-      add_unique(keys, series_key(c, l));
+    for (const auto& [c, s] : rows) {
+      add_unique(xs, x_value(*c, l));
+      add_unique(keys, series_key(*c, l));
     }
     std::vector<PlotSeries> time(keys.size()), nodes(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
       time[k] = {keys[k], std::vector<Interval>(xs.size())};
       nodes[k] = {keys[k], std::vector<Interval>(xs.size())};
     }
-    for (const RunConfig& c : x.configs) {
-      if (!l.panels.empty() && c.value_text(l.panels) != panel)
-        continue;
-      auto it = by_config.find(c.label());
-      if (it == by_config.end())
-        continue;
-      const Summary s = summarise(it->second);
-      const std::string xv = l.rows.empty()
-                                 ? std::string("all")
-                                 : (c.value_text(l.rows).empty() ? "—" : c.value_text(l.rows));
-      const auto xi = static_cast<std::size_t>(std::find(xs.begin(), xs.end(), xv) - xs.begin());
+    for (const auto& [c, s] : rows) {
+      const auto xi =
+          static_cast<std::size_t>(std::find(xs.begin(), xs.end(), x_value(*c, l)) - xs.begin());
       const auto ki = static_cast<std::size_t>(
-          std::find(keys.begin(), keys.end(), series_key(c, l)) - keys.begin());
+          std::find(keys.begin(), keys.end(), series_key(*c, l)) - keys.begin());
       time[ki].points[xi] = s.time;
       nodes[ki].points[xi] = s.nodes;
     }
