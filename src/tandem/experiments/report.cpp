@@ -109,12 +109,14 @@ Layout layout_of(const Experiment& x) {
   return l;
 }
 
+/// A plot series' name: the values of the varying parameters other than the x axis and the panel
+/// ("interactive-contact, experienced"); the table beside the plot names the parameters.
 std::string series_key(const RunConfig& c, const Layout& l) {
   std::string s;
   for (const std::string& n : l.varying) {
     if (n == l.rows || n == l.panels)
       continue;
-    s += (s.empty() ? "" : " ") + n + "=" + (c.value_text(n).empty() ? "—" : c.value_text(n));
+    s += (s.empty() ? "" : ", ") + (c.value_text(n).empty() ? "—" : c.value_text(n));
   }
   return s.empty() ? "tandem" : s;
 }
@@ -188,7 +190,7 @@ std::string x_value(const RunConfig& c, const Layout& l) {
 std::string svg_plot(const std::string& title, const std::string& x_title,
                      const std::string& y_title, const std::vector<std::string>& x_labels,
                      const std::vector<PlotSeries>& series) {
-  constexpr double W = 640, H = 400, left = 70, right = 180, top = 40, bottom = 60;
+  constexpr double W = 780, H = 400, left = 70, right = 300, top = 40, bottom = 60;
   const double pw = W - left - right, ph = H - top - bottom;
   double lo = INFINITY, hi = -INFINITY;
   for (const auto& s : series) {
@@ -207,7 +209,7 @@ std::string svg_plot(const std::string& title, const std::string& x_title,
   if (l1 <= l0)
     l1 = l0 + 1;
   auto y = [&](double v) {
-    return top + ph * (1.0 - (std::log10(std::max(v, lo)) - l0) / (l1 - l0));
+    return top + ph * (1.0 - (std::log10(std::max(v, std::pow(10.0, l0))) - l0) / (l1 - l0));
   };
   auto x = [&](std::size_t i) {
     return left + (x_labels.size() <= 1
