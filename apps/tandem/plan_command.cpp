@@ -187,6 +187,7 @@ int run_plan(const PlanArgs& args) {
       j["alpha"] = i.alpha;
       j["operator_iterations"] = stats.operator_iterations;
       j["operator_time_s"] = stats.operator_time_s;
+      j["operator_waits"] = run.operator_waits;
       if (spec.mode == PlannerMode::interactive_contact) {
         j["contact_samples"] = i.contact_samples;
         j["contact_distance"] = contact_distance(i, problem.space);
@@ -327,6 +328,7 @@ Command add_plan_command(CLI::App& app) {
       "collision_checks,\ntree_digest, path_length, raw_path_length, path_states, simplify_time_s, "
       "out; in "
       "interactive modes also operator,\noperator_seed, alpha, operator_iterations, "
+      "operator_waits, "
       "operator_time_s and the mode's own figures.\nExit 0 if solved; 1 if not solved within the "
       "time limit; 2 for bad input (including a start or\ngoal outside the bounds or in "
       "collision).");

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <thread>
 
 #include "support/test_support.hpp"
@@ -241,6 +243,88 @@ TEST(VirtualTimeFeed, UpdatesEveryPeriodAndCountsItsTime) {
   EXPECT_EQ(feed.at(10)->time, 10.0);
   EXPECT_GT(feed.operator_seconds(), 0.0);
   EXPECT_FALSE(feed.at(10)->nearest.in_collision);
+}
+
+/// A roadmap at a fixed distance from everything.
+struct FixedRoadmap final : RoadmapView {
+  double d = 0.0;
+  double distance_to_roadmap(const Config&) const override { return d; }
+};
+
+TEST(Pacer, FollowsTimeNearTheRoadmapAndGoesBackAwayFromIt) {
+  Pacer never(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(never.advance(50.0, 1e9), 50.0);  // it does not look
+
+  Pacer p(1.0);
+  EXPECT_EQ(p.advance(10.0, 0.5), 10.0);  // the roadmap is near: it moves on
+  EXPECT_EQ(p.advance(30.0, 0.9), 30.0);
+  EXPECT_EQ(p.advance(35.0, 1.5), 25.0);  // too far: it goes back for as long
+  EXPECT_EQ(p.waits(), 1u);
+  EXPECT_EQ(p.advance(35.0, 1.5), 25.0);  // no time passed
+  EXPECT_EQ(p.advance(100.0, 2.0), 0.0);  // never before the start of its way
+  EXPECT_EQ(p.advance(110.0, 0.0), 10.0);
+}
+
+TEST(VirtualTimeFeed, AWatchingOperatorWaitsForTheRoadmap) {
+  Fixture f;
+  const auto source = f.operator_source();
+  ASSERT_TRUE(std::isfinite(source->lead()));
+  FixedRoadmap roadmap;
+  VirtualTimeFeed near(OperatorModel(f.checker, source), 10);
+  VirtualTimeFeed far(OperatorModel(f.checker, source), 10);
+  for (std::uint64_t i = 0; i <= 1000; i += 10) {
+    roadmap.d = 0.0;
+    near.at(i, &roadmap);
+    roadmap.d = 10.0 * source->lead();
+    far.at(i, &roadmap);
+  }
+  // Near the roadmap the operator keeps its schedule; far from it, it never left the start.
+  EXPECT_EQ(near.at(1000)->pace, 1000.0);
+  EXPECT_TRUE(near.at(1000)->device.q_device == source->read(1000.0).q_device);
+  EXPECT_EQ(far.at(1000)->pace, 0.0);
+  EXPECT_EQ(far.operator_waits(), 100u);
+  const auto* guide = dynamic_cast<const GuideFollower*>(source.get());
+  ASSERT_NE(guide, nullptr);
+  EXPECT_LT((far.at(1000)->device.q_device.t - guide->guide_pose(0.0).t).norm(),
+            (near.at(1000)->device.q_device.t - guide->guide_pose(0.0).t).norm());
+}
+
+TEST(InteractiveBiRRT, TheSimulatedOperatorWatchesTheRoadmap) {
+  // The operator alone (alpha = 0): the tree follows it through the gap, slower than it moves. A
+  // watching operator never gets much more than its lead ahead of the roadmap; one that does not
+  // watch runs far ahead.
+  Fixture f;
+  const auto profile = operator_profile("experienced", f.problem.space, OperatorClock::ticks);
+  auto farthest = [&](double lead) {
+    OperatorProfile p = profile;
+    p.lead = lead;
+    std::vector<Config> keys = {f.problem.start, Config{}, f.problem.goal};
+    keys[1].t = {0.0, 0.0, 0.0};
+    VirtualTimeFeed feed(
+        OperatorModel(f.checker, std::make_shared<GuideFollower>(f.problem.space, keys, p, 1)), 10);
+    const Interaction interaction{&feed};
+    PlannerSettings settings;
+    settings.seed = 5;
+    settings.extend = ExtendMode::last_valid;
+    settings.interaction.alpha = 0.0;
+    auto planner =
+        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    double d = 0.0;
+    while (planner->step() == PlannerStatus::running && planner->stats().iterations < 20000) {
+      // What the planner will see next (the same roadmap, so the same state).
+      const OperatorState* s = feed.at(planner->stats().iterations, planner.get());
+      d = std::max(d, planner->distance_to_roadmap(s->device.q_device));
+    }
+    return d;
+  };
+  const double tremor = f.problem.space.distance(
+      Config{}, Config{Eigen::Vector3d::Constant(profile.tremor_translation),
+                       Eigen::Quaterniond(
+                           Eigen::AngleAxisd(profile.tremor_rotation, Eigen::Vector3d::UnitZ()))});
+  // Its lead, one update's motion, and its tremor then and now (fixed seeds: no flakiness).
+  const double bound = profile.lead + 10.0 * profile.speed + 2.0 * tremor;
+  EXPECT_LT(farthest(profile.lead), bound);
+  EXPECT_GT(farthest(std::numeric_limits<double>::infinity()), bound);
 }
 
 }  // namespace

@@ -131,6 +131,7 @@ RunRecord make_record(const Problem& problem, const RunConfig& config, std::uint
   r.path_length = outcome.path_length;
   r.operator_iterations = s.operator_iterations;
   r.contact_entries = s.contact_entries;
+  r.operator_waits = outcome.operator_waits;
   r.tree_digest = format_digest(outcome.tree_digest);
   return r;
 }
@@ -196,6 +197,7 @@ std::string format_record(const RunRecord& r) {
   j["path_length"] = r.path_length;
   j["operator_iterations"] = r.operator_iterations;
   j["contact_entries"] = r.contact_entries;
+  j["operator_waits"] = r.operator_waits;
   j["tree_digest"] = r.tree_digest;
   return j.dump();
 }
@@ -225,6 +227,7 @@ std::optional<RunRecord> parse_record(const std::string& line) {
     r.path_length = j.at("path_length").get<double>();
     r.operator_iterations = j.at("operator_iterations").get<std::uint64_t>();
     r.contact_entries = j.at("contact_entries").get<std::uint64_t>();
+    r.operator_waits = j.value("operator_waits", std::uint64_t{0});
     r.tree_digest = j.at("tree_digest").get<std::string>();
     return r;
   } catch (const nlohmann::json::exception&) {

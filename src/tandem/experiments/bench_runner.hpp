@@ -43,7 +43,8 @@ struct RunRecord {
   double path_length = 0.0;  ///< of the planner's (unsimplified) path; 0 when not solved
   std::uint64_t operator_iterations = 0;
   std::uint64_t contact_entries = 0;
-  std::string tree_digest;  ///< hex of RunOutcome::tree_digest
+  std::uint64_t operator_waits = 0;  ///< RunOutcome::operator_waits
+  std::string tree_digest;           ///< hex of RunOutcome::tree_digest
 
   /// Identifies the run within an experiment: configuration and seed.
   std::string key() const { return config + " #" + std::to_string(seed); }

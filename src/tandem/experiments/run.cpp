@@ -99,6 +99,8 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
   outcome.status = planner->solve(termination);
   outcome.stats = planner->stats();
   outcome.tree_digest = tree_digest(planner->trees());
+  if (feed != nullptr)
+    outcome.operator_waits = feed->operator_waits();
   outcome.range = planner->range();
   if (outcome.status == PlannerStatus::solved) {
     outcome.path = planner->solution();

@@ -52,6 +52,9 @@ struct RunOutcome {
   Path path;  ///< the planner's path (not simplified); empty unless solved
   double path_length = 0.0;
   std::string operator_description;
+  /// Operator updates at which a simulated operator found the roadmap beyond its lead and went
+  /// back.
+  std::uint64_t operator_waits = 0;
   double range = 0.0;
   /// tree_digest() of the planner's trees when it stopped: same spec, same digest (for runs that
   /// end by solving or by an iteration limit; a time limit stops at a machine-dependent point).

@@ -2,9 +2,10 @@
 // How the planner thread gets the operator's state, without ever blocking.
 //
 // - VirtualTimeFeed: deterministic. Operator time is counted in planner iterations; the operator's
-//   state changes every `period` iterations and is a pure function of that time, computed on the
-//   planner thread when the planner first asks for it (its cost is reported as operator_seconds).
-//   The same seed and source give the same tree.
+//   state changes every `period` iterations and is a function of that time and of what the
+//   operator saw of the roadmap (its pace, see Pacer), computed on the planner thread when the
+//   planner first asks for it (its cost is reported as operator_seconds). The same seed and source
+//   give the same tree.
 // - LiveFeed: the latest state an OperatorThread published (wall-clock). It records, for each
 // iteration
 //   at which the planner saw a new state, that state: with the planner's seed, this record replays
@@ -19,14 +20,25 @@
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/interaction/latest_value.hpp"
 #include "tandem/interaction/operator_model.hpp"
+#include "tandem/interaction/pacer.hpp"
 
 namespace tandem {
+
+/// What an operator sees of the roadmap (the planner's trees, as a viewer shows them).
+class RoadmapView {
+ public:
+  virtual ~RoadmapView() = default;
+  /// Metric distance from q to the nearest node of any tree.
+  virtual double distance_to_roadmap(const Config& q) const = 0;
+};
 
 class OperatorFeed {
  public:
   virtual ~OperatorFeed() = default;
-  /// The operator's state for this planner iteration, or nullptr if there is none yet.
-  virtual const OperatorState* at(std::uint64_t iteration) = 0;
+  /// The operator's state for this planner iteration, or nullptr if there is none yet. `roadmap`,
+  /// when given, is what a simulated operator that watches the roadmap looks at.
+  virtual const OperatorState* at(std::uint64_t iteration,
+                                  const RoadmapView* roadmap = nullptr) = 0;
   /// Seconds the planner thread spent computing operator states.
   double operator_seconds() const { return operator_seconds_; }
 
@@ -37,11 +49,14 @@ class OperatorFeed {
 class VirtualTimeFeed final : public OperatorFeed {
  public:
   VirtualTimeFeed(OperatorModel model, std::uint64_t period = 10);
-  const OperatorState* at(std::uint64_t iteration) override;
+  const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
+  /// Updates at which the operator found the roadmap beyond its lead and went back.
+  unsigned long long operator_waits() const { return pacer_.waits(); }
 
  private:
   OperatorModel model_;
   std::uint64_t period_;
+  Pacer pacer_;
   OperatorState current_;
   bool have_ = false;
 };
@@ -55,7 +70,7 @@ struct FeedRecord {
 class LiveFeed final : public OperatorFeed {
  public:
   explicit LiveFeed(LatestValue<OperatorState>& channel) : channel_(channel) {}
-  const OperatorState* at(std::uint64_t iteration) override;
+  const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
   const std::vector<FeedRecord>& record() const { return record_; }
 
  private:
@@ -68,7 +83,7 @@ class LiveFeed final : public OperatorFeed {
 class ReplayFeed final : public OperatorFeed {
  public:
   explicit ReplayFeed(std::vector<FeedRecord> record) : record_(std::move(record)) {}
-  const OperatorState* at(std::uint64_t iteration) override;
+  const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
 
  private:
   std::vector<FeedRecord> record_;

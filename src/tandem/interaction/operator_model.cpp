@@ -6,11 +6,12 @@ OperatorModel::OperatorModel(const CollisionChecker& checker,
                              std::shared_ptr<const OperatorSource> source)
     : checker_(checker.clone()), source_(std::move(source)) {}
 
-OperatorState OperatorModel::compute(double t, std::uint64_t sequence) {
+OperatorState OperatorModel::compute(double t, double pace, std::uint64_t sequence) {
   OperatorState s;
   s.sequence = sequence;
   s.time = t;
-  s.device = source_->read(t);
+  s.pace = pace;
+  s.device = source_->read_paced(t, pace);
   s.nearest = checker_.nearest_obstacle(s.device.q_device);
   s.frame = find_local_frame(s.nearest, s.device.q_device);
   return s;

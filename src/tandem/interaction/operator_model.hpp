@@ -24,7 +24,9 @@ class OperatorModel {
 
   OperatorModel clone() const { return OperatorModel(checker_, source_); }
 
-  OperatorState compute(double t, std::uint64_t sequence);
+  OperatorState compute(double t, std::uint64_t sequence) { return compute(t, t, sequence); }
+  /// The state at time t of an operator at `pace` along its way (see Pacer).
+  OperatorState compute(double t, double pace, std::uint64_t sequence);
 
   const OperatorSource& source() const { return *source_; }
   const CollisionCounters& counters() const { return checker_.counters(); }

@@ -29,6 +29,7 @@ struct DeviceReading {
 struct OperatorState {
   std::uint64_t sequence = 0;  ///< 1, 2, ... in publication order
   double time = 0.0;           ///< operator time: seconds, or planner iterations in virtual time
+  double pace = 0.0;           ///< where the operator is along its way, in time (see Pacer)
   DeviceReading device;
   NearestObstacle nearest;            ///< the object at q_device against the scene
   std::optional<ContactFrame> frame;  ///< the tangent plane there, when the object does not touch

@@ -94,8 +94,8 @@ Config GuideFollower::guide_pose(double s) const {
                             span > 0.0 ? (s - cumulative_[i - 1]) / span : 0.0);
 }
 
-Config GuideFollower::pose(double t) const {
-  Config q = guide_pose(progress(t));
+Config GuideFollower::pose(double t, double pace) const {
+  Config q = guide_pose(progress(pace));
   Eigen::Matrix<double, 6, 1> noise;
   for (std::size_t c = 0; c < 6; ++c) {
     double x = 0.0;
@@ -115,13 +115,15 @@ Config GuideFollower::pose(double t) const {
   return q;
 }
 
-DeviceReading GuideFollower::read(double t) const {
+DeviceReading GuideFollower::read_paced(double t, double pace) const {
   DeviceReading r;
-  r.q_device = pose(t);
-  // Velocity by a central difference over a tenth of the tremor's period (or of a time unit).
+  r.q_device = pose(t, pace);
+  // Velocity by a central difference over a tenth of the tremor's period (or of a time unit), as if
+  // the pace kept up with the time around t.
   const double h = profile_.tremor_frequency > 0.0 ? 0.1 / profile_.tremor_frequency : 0.1;
-  const Config a = pose(std::max(0.0, t - h)), b = pose(t + h);
-  const double dt = (t + h) - std::max(0.0, t - h);
+  const double before = std::min(h, std::min(t, pace));
+  const Config a = pose(t - before, pace - before), b = pose(t + h, pace + h);
+  const double dt = h + before;
   r.velocity.head<3>() = (b.t - a.t) / dt;
   Eigen::Quaterniond dq = b.q * a.q.inverse();
   if (dq.w() < 0.0)
@@ -134,8 +136,10 @@ DeviceReading GuideFollower::read(double t) const {
 std::string GuideFollower::describe() const {
   std::ostringstream os;
   os << profile_.name << " operator following a guide of " << keyframes_.size()
-     << " keyframes (length " << guide_length() << ", speed " << profile_.speed
-     << " per time unit)";
+     << " keyframes (length " << guide_length() << ", speed " << profile_.speed << " per time unit";
+  if (std::isfinite(profile_.lead))
+    os << ", at most " << profile_.lead << " ahead of the roadmap";
+  os << ")";
   return os.str();
 }
 

@@ -24,7 +24,10 @@ class GuideFollower final : public OperatorSource {
   GuideFollower(const SE3Space& space, std::vector<Config> keyframes, OperatorProfile profile,
                 std::uint64_t seed);
 
-  DeviceReading read(double t) const override;
+  DeviceReading read(double t) const override { return read_paced(t, t); }
+  /// Progress along the guide at time `pace`, tremor at time t.
+  DeviceReading read_paced(double t, double pace) const override;
+  double lead() const override { return profile_.lead; }
   double end_time() const override { return timeline_.back().t; }
   std::string describe() const override;
 
@@ -42,7 +45,7 @@ class GuideFollower final : public OperatorSource {
     double frequency, phase, amplitude;
   };
 
-  Config pose(double t) const;
+  Config pose(double t, double pace) const;
 
   const SE3Space& space_;
   std::vector<Config> keyframes_;

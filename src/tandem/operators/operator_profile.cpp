@@ -22,6 +22,8 @@ OperatorProfile operator_profile(std::string_view name, const SE3Space& space,
     p.tremor_translation = 0.01 * diagonal;
     p.tremor_rotation = 3.0 * kDeg;
     p.tremor_frequency = 8.0 * per_unit;
+    // Keeps the object a quarter of a planner step (range = 0.2 D) ahead of the roadmap.
+    p.lead = 0.05 * D;
   } else if (name == "inexperienced") {
     p.speed = D * per_unit / 16.0;
     p.tremor_translation = 0.03 * diagonal;
@@ -31,6 +33,8 @@ OperatorProfile operator_profile(std::string_view name, const SE3Space& space,
     p.pause_duration = 2.0 / per_unit;
     p.backtrack_share = 0.3;
     p.backtrack_distance = 0.05 * D;
+    // Watches the roadmap less closely: lets the object get half a planner step ahead.
+    p.lead = 0.1 * D;
   } else {
     throw std::invalid_argument("unknown operator profile '" + std::string(name) + "'");
   }

@@ -3,9 +3,13 @@
 //
 // "A person has a good global idea of the way and poor fine motion": a simulated operator follows a
 // coarse guide (a few hand-placed keyframes) at some speed, with tremor, and, if inexperienced,
-// slowly, with pauses and back-ups. Amounts scale with the scene (its maximum extent D and the
-// bounds' diagonal), so one profile fits every scene.
+// slowly, with pauses and back-ups. Like the papers' operators, who work "through the
+// visualization of the roadmap", it watches the roadmap: it does not run ahead of it by more than
+// its lead, and goes back along its guide to where the roadmap is when it has (see Pacer). It
+// never sees a solution. Amounts scale with the scene (its maximum extent D and the bounds'
+// diagonal), so one profile fits every scene.
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +31,9 @@ struct OperatorProfile {
   double pause_duration = 0.0;      ///< operator time per pause
   double backtrack_share = 0.0;     ///< share of pauses that start by backing up
   double backtrack_distance = 0.0;  ///< metric distance backed up
+  /// How far (metric distance) the operator lets the object get from the nearest roadmap node
+  /// before it stops following its guide and goes back along it; infinity: it never looks.
+  double lead = std::numeric_limits<double>::infinity();
 };
 
 /// "experienced" (fast, precise) or "inexperienced" (slow, noisy, hesitating), scaled to the space

@@ -94,7 +94,7 @@ Config IRRT::shoot(const Config& q_user, const InteractionSettings& s, NodeSourc
 
 bool IRRT::iterate() {
   const InteractionSettings& s = interaction_settings();
-  const OperatorState* op = interaction_.feed->at(stats().iterations);
+  const OperatorState* op = interaction_.feed->at(stats().iterations, this);
   NodeSource source = NodeSource::random;
   bool toward_goal = false;
   Config q_rand;

@@ -1,7 +1,9 @@
 #include "tandem/planning/planner.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "tandem/core/stopwatch.hpp"
@@ -157,6 +159,13 @@ void Planner::update_counts() {
 
 void Planner::count_extension(ExtendStatus status) {
   ++extension_outcomes_[static_cast<std::size_t>(status)];
+}
+
+double Planner::distance_to_roadmap(const Config& q) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Tree* tree : trees())
+    best = std::min(best, space_.distance(q, tree->nodes[tree->nearest(q)]));
+  return best;
 }
 
 void Planner::attach(Tree& tree) {

@@ -100,7 +100,7 @@ struct Termination {
   const std::atomic<bool>* stop = nullptr;
 };
 
-class Planner {
+class Planner : public RoadmapView {
  public:
   Planner(MotionValidator& validator, const Config& start, const Config& goal,
           const PlannerSettings& settings, const Interaction* interaction = nullptr);
@@ -127,6 +127,8 @@ class Planner {
   double range() const { return range_; }
   /// The trees, for display and statistics; the first is rooted at the start.
   virtual std::vector<const Tree*> trees() const = 0;
+  /// Metric distance from q to the nearest node of any tree (what a watching operator sees).
+  double distance_to_roadmap(const Config& q) const override;
 
  protected:
   /// One iteration of the algorithm; returns true when solution_ has been set.

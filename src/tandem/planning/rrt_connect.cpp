@@ -22,7 +22,7 @@ void RRTConnect::choose_targets() {
     const InteractionSettings& s = interaction_settings();
     // Algorithm 1, lines 2-3: the operator has authority when a > alpha.
     if (authority_rng_.uniform01() > s.alpha) {
-      const OperatorState* op = interaction_.feed->at(stats().iterations);
+      const OperatorState* op = interaction_.feed->at(stats().iterations, this);
       if (op != nullptr) {
         ++operator_iterations_;
         const auto& frame = op->frame;
