@@ -28,7 +28,8 @@ namespace tandem {
 class RoadmapView {
  public:
   virtual ~RoadmapView() = default;
-  /// Metric distance from q to the nearest node of any tree.
+  /// Metric distance from q to the nearest node of the tree the operator carries along (the one
+  /// rooted at the start; near the goal, the goal's tree is always close and says nothing).
   virtual double distance_to_roadmap(const Config& q) const = 0;
 };
 

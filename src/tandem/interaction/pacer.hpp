@@ -4,10 +4,10 @@
 // The papers' operator moves the object "through the visualization of the roadmap": a person who
 // sees the trees lag behind does not run on to the goal, but waits and goes back to where the
 // roadmap is. A Pacer models this with the operator's own clock, its pace: the pace follows
-// operator time while the nearest roadmap node is within the operator's lead of q_device, and runs
-// backward (the operator retraces its way, at its own speed) while it is not; the source is then
-// read at that pace (OperatorSource::read_paced). What the operator looks at is only the
-// roadmap, as a person sees it on the screen: never a solution.
+// operator time while the roadmap (the tree it carries from the start) is within the operator's
+// lead of q_device, and runs backward (the operator retraces its way, at its own speed) while it
+// is not; the source is then read at that pace (OperatorSource::read_paced). What the operator
+// looks at is only the roadmap, as a person sees it on the screen: never a solution.
 //
 // Deterministic: the pace is a function of the sequence of (time, distance) observations.
 // Threading: not thread-safe; one per operator.

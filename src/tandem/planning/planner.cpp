@@ -162,10 +162,8 @@ void Planner::count_extension(ExtendStatus status) {
 }
 
 double Planner::distance_to_roadmap(const Config& q) const {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Tree* tree : trees())
-    best = std::min(best, space_.distance(q, tree->nodes[tree->nearest(q)]));
-  return best;
+  const Tree& tree = *trees().front();
+  return space_.distance(q, tree.nodes[tree.nearest(q)]);
 }
 
 void Planner::attach(Tree& tree) {

@@ -127,7 +127,8 @@ class Planner : public RoadmapView {
   double range() const { return range_; }
   /// The trees, for display and statistics; the first is rooted at the start.
   virtual std::vector<const Tree*> trees() const = 0;
-  /// Metric distance from q to the nearest node of any tree (what a watching operator sees).
+  /// Metric distance from q to the nearest node of the tree rooted at the start: the tree the
+  /// operator carries toward the goal, which a watching operator keeps up with.
   double distance_to_roadmap(const Config& q) const override;
 
  protected:
