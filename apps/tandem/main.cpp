@@ -42,6 +42,10 @@ int run(int argc, char** argv) {
       tandem::cli::add_render_command);
   add("bench", "Run an experiment (sweeps x seeds): runs, OMPL benchmark log, report",
       tandem::cli::add_bench_command);
+  add("interactive", "A live session: planner and operator threads, journaled for exact replay",
+      tandem::cli::add_interactive_command);
+  add("replay", "Rebuild a live session's tree from its journal and check it is identical",
+      tandem::cli::add_replay_command);
 
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

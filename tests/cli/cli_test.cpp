@@ -335,5 +335,43 @@ TEST(Cli, RendersSvg) {
   EXPECT_THAT(text, HasSubstr("<polyline"));
 }
 
+TEST(Cli, AnInteractiveSessionReplaysToTheIdenticalTree) {
+  TempDir dir;
+  const auto journal = dir.path() / "session.jsonl";
+  const auto path = dir.path() / "live.path";
+  const test::RunResult live =
+      run_tandem({"interactive", "cluttered-1", "--headless", "--seed", "2", "--time-limit", "60",
+                  "--session", journal.string(), "--out", path.string(), "--digest-every", "0.2"});
+  ASSERT_EQ(live.exit_code, 0) << live.out << live.err;
+  EXPECT_THAT(live.out, HasSubstr("solved after"));
+  EXPECT_THAT(live.out, HasSubstr("tandem replay " + journal.string()));
+  const test::RunResult check = run_tandem({"check-path", "cluttered-1", path.string()});
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+
+  const test::RunResult replay = run_tandem({"replay", journal.string()});
+  EXPECT_EQ(replay.exit_code, 0) << replay.out << replay.err;
+  EXPECT_THAT(replay.out, HasSubstr("identical to the session's tree"));
+
+  // A journal cut short by a kill still replays, to its last recorded digest.
+  std::string text = read(journal);
+  const auto end_record = text.rfind("\"end\":");
+  ASSERT_NE(end_record, std::string::npos);
+  const auto killed =
+      dir.write("killed.jsonl", text.substr(0, text.rfind('\n', end_record) + 1 + 5));
+  const test::RunResult partial = run_tandem({"replay", killed.string()});
+  EXPECT_EQ(partial.exit_code, 0) << partial.out << partial.err;
+  EXPECT_THAT(partial.out, HasSubstr("cut short"));
+}
+
+TEST(Cli, InteractiveAndReplayRejectBadInput) {
+  TempDir dir;
+  expect_bad_input({"interactive", "cluttered-1"}, {"--headless"});
+  expect_bad_input({"interactive", "cluttered-1", "--headless", "--mode", "birrt"},
+                   {"--mode", "interactive mode"});
+  expect_bad_input({"replay", (dir.path() / "none.jsonl").string()}, {"none.jsonl"});
+  const auto junk = dir.write("junk.jsonl", "{\"journal\":\"tandem session\",\"version\":9}\n");
+  expect_bad_input({"replay", junk.string()}, {"junk.jsonl", "version 9"});
+}
+
 }  // namespace
 }  // namespace tandem

@@ -34,13 +34,17 @@ bool is_interactive(PlannerMode mode) {
          mode == PlannerMode::irrt;
 }
 
-std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec) {
+std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec,
+                                                    OperatorClock clock) {
   const std::string& name = spec.operator_name;
   if (name.rfind("trace:", 0) == 0) {
     Trace trace = read_trace_file(name.substr(6));
-    if (trace.clock != OperatorClock::ticks) {
-      throw InputError(name.substr(6),
-                       "a trace in seconds cannot drive a virtual-time run (record it in ticks)");
+    if (trace.clock != clock) {
+      throw InputError(name.substr(6), clock == OperatorClock::ticks
+                                           ? "a trace in seconds cannot drive a virtual-time run "
+                                             "(record it in ticks)"
+                                           : "a trace in ticks (virtual time) cannot drive a live "
+                                             "session (record it in seconds)");
     }
     return std::make_shared<TracePlayer>(problem.space, std::move(trace));
   }
@@ -50,7 +54,7 @@ std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, cons
   }
   OperatorProfile profile;
   try {
-    profile = operator_profile(name, problem.space, OperatorClock::ticks);
+    profile = operator_profile(name, problem.space, clock);
   } catch (const std::invalid_argument&) {
     throw InputError("--operator",
                      "unknown operator '" + name + "' (experienced, inexperienced, or trace:FILE)");

@@ -67,7 +67,10 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec);
 /// The same with a checker built for the problem's scene (its counters keep counting).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker);
 
-/// The operator source of a spec: a guide follower or a trace player.
-std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec);
+/// The operator source of a spec: a guide follower or a trace player, on the given clock
+/// (planner iterations for runs in virtual time, seconds for live sessions). Throws InputError for
+/// a trace recorded on the other clock.
+std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec,
+                                                    OperatorClock clock = OperatorClock::ticks);
 
 }  // namespace tandem

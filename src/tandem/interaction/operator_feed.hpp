@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "tandem/core/stopwatch.hpp"
@@ -73,6 +74,8 @@ class LiveFeed final : public OperatorFeed {
   explicit LiveFeed(LatestValue<OperatorState>& channel) : channel_(channel) {}
   const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
   const std::vector<FeedRecord>& record() const { return record_; }
+  /// Hands over the record so far and starts a new one (a journal writes it away as it grows).
+  std::vector<FeedRecord> take_record() { return std::exchange(record_, {}); }
 
  private:
   LatestValue<OperatorState>& channel_;

@@ -19,7 +19,8 @@ namespace tandem {
 
 class OperatorModel {
  public:
-  /// `checker` is cloned: the model has its own FCL objects.
+  /// `checker` is cloned: the model has its own FCL objects. `source` may be null for a model
+  /// that only observes given readings (observe()).
   OperatorModel(const CollisionChecker& checker, std::shared_ptr<const OperatorSource> source);
 
   OperatorModel clone() const { return OperatorModel(checker_, source_); }
@@ -27,6 +28,10 @@ class OperatorModel {
   OperatorState compute(double t, std::uint64_t sequence) { return compute(t, t, sequence); }
   /// The state at time t of an operator at `pace` along its way (see Pacer).
   OperatorState compute(double t, double pace, std::uint64_t sequence);
+  /// The state for a given device reading: the nearest obstacle and the contact frame at its
+  /// q_device (what a replay recomputes from a journal).
+  OperatorState observe(const DeviceReading& reading, double t, double pace,
+                        std::uint64_t sequence);
 
   const OperatorSource& source() const { return *source_; }
   const CollisionCounters& counters() const { return checker_.counters(); }

@@ -1,14 +1,18 @@
 #include "tandem/interaction/operator_thread.hpp"
 
 #include <chrono>
+#include <limits>
 
 #include "tandem/core/stopwatch.hpp"
 
 namespace tandem {
 
 OperatorThread::OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel,
-                               double rate_hz)
-    : model_(std::move(model)), channel_(channel), period_s_(rate_hz > 0.0 ? 1.0 / rate_hz : 0.0) {
+                               double rate_hz, LatestValue<double>* roadmap)
+    : model_(std::move(model)),
+      channel_(channel),
+      roadmap_(roadmap),
+      period_s_(rate_hz > 0.0 ? 1.0 / rate_hz : 0.0) {
   thread_ = std::thread([this] { run(); });
 }
 
@@ -32,8 +36,13 @@ void OperatorThread::run() {
   const Stopwatch watch;
   auto next = Clock::now();
   std::uint64_t sequence = 0;
+  Pacer pacer(roadmap_ != nullptr ? model_.source().lead()
+                                  : std::numeric_limits<double>::infinity());
   while (!stop_.load(std::memory_order_relaxed)) {
-    channel_.publish(model_.compute(watch.seconds(), ++sequence));
+    const double t = watch.seconds();
+    const double* seen = roadmap_ != nullptr ? roadmap_->latest() : nullptr;
+    const double pace = pacer.advance(t, seen != nullptr ? *seen : 0.0);
+    channel_.publish(model_.compute(t, pace, ++sequence));
     published_.store(sequence, std::memory_order_relaxed);
     elapsed_s_.store(watch.seconds(), std::memory_order_relaxed);
     next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s_));

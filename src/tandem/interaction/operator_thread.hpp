@@ -11,13 +11,17 @@
 
 #include "tandem/interaction/latest_value.hpp"
 #include "tandem/interaction/operator_model.hpp"
+#include "tandem/interaction/pacer.hpp"
 
 namespace tandem {
 
 class OperatorThread {
  public:
-  /// Publishes compute(t) with t = seconds since start, `rate_hz` times a second (at most).
-  OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel, double rate_hz);
+  /// Publishes compute(t) with t = seconds since start, `rate_hz` times a second (at most). With
+  /// `roadmap`, a simulated operator that watches the roadmap keeps pace with it (see Pacer): the
+  /// planner thread publishes there the distance from the latest q_device it saw to the roadmap.
+  OperatorThread(OperatorModel model, LatestValue<OperatorState>& channel, double rate_hz,
+                 LatestValue<double>* roadmap = nullptr);
   ~OperatorThread();
   OperatorThread(const OperatorThread&) = delete;
   OperatorThread& operator=(const OperatorThread&) = delete;
@@ -32,6 +36,7 @@ class OperatorThread {
 
   OperatorModel model_;
   LatestValue<OperatorState>& channel_;
+  LatestValue<double>* roadmap_;
   double period_s_;
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> published_{0};

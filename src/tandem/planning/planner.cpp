@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "tandem/core/digest.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/planning/irrt.hpp"
 #include "tandem/planning/rrt.hpp"
@@ -51,37 +52,22 @@ std::string_view to_string(NodeSource source) {
 }
 
 std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
-  // FNV-1a, 64 bits, over the bytes of each value.
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  auto mix = [&h](const auto& value) {
-    unsigned char bytes[sizeof value];
-    std::memcpy(bytes, &value, sizeof value);
-    for (unsigned char b : bytes) {
-      h ^= b;
-      h *= 0x100000001b3ULL;
-    }
-  };
+  Digest d;
   for (const Tree* tree : trees) {
-    mix(tree->size());
+    d.mix(tree->size());
     for (std::size_t i = 0; i < tree->size(); ++i) {
       const Config& q = tree->nodes[i];
       for (int k = 0; k < 3; ++k)
-        mix(q.t[k]);
-      mix(q.q.w());
-      mix(q.q.x());
-      mix(q.q.y());
-      mix(q.q.z());
-      mix(tree->parent[i]);
-      mix(tree->source[i]);
+        d.mix(q.t[k]);
+      d.mix(q.q.w());
+      d.mix(q.q.x());
+      d.mix(q.q.y());
+      d.mix(q.q.z());
+      d.mix(tree->parent[i]);
+      d.mix(tree->source[i]);
     }
   }
-  return h;
-}
-
-std::string format_digest(std::uint64_t digest) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(digest));
-  return buf;
+  return d.value();
 }
 
 std::string_view to_string(IrrtSampling mode) {

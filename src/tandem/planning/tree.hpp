@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tandem/core/digest.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/nn/nearest_neighbors.hpp"
 
@@ -72,7 +73,5 @@ struct Tree {
 /// A digest of the trees' contents (every node's configuration bits, parent and source, in order):
 /// equal digests mean the same trees. For checking that a run is reproducible.
 std::uint64_t tree_digest(const std::vector<const Tree*>& trees);
-/// A digest as 16 hexadecimal digits.
-std::string format_digest(std::uint64_t digest);
 
 }  // namespace tandem

@@ -1,0 +1,320 @@
+#include "tandem/session/journal.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <variant>
+
+#include "tandem/core/digest.hpp"
+#include "tandem/core/error.hpp"
+#include "tandem/io/text.hpp"
+
+namespace tandem {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kMagic = "tandem session";
+constexpr int kVersion = 1;
+
+void mix_config(Digest& d, const Config& q) {
+  for (int k = 0; k < 3; ++k)
+    d.mix(q.t[k]);
+  d.mix(q.q.x());
+  d.mix(q.q.y());
+  d.mix(q.q.z());
+  d.mix(q.q.w());
+}
+
+void mix_body(Digest& d, const Body& body) {
+  d.mix_text(body.name);
+  d.mix(body.parts.size());
+  for (const Part& part : body.parts) {
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        d.mix(part.pose.matrix()(r, c));
+    std::visit(
+        [&](const auto& g) {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Box>) {
+            d.mix('b');
+            for (int k = 0; k < 3; ++k)
+              d.mix(g.size[k]);
+          } else if constexpr (std::is_same_v<G, Sphere>) {
+            d.mix('s');
+            d.mix(g.radius);
+          } else if constexpr (std::is_same_v<G, Cylinder>) {
+            d.mix('c');
+            d.mix(g.radius);
+            d.mix(g.length);
+          } else {
+            d.mix('m');
+            d.mix(g.mesh->vertices.size());
+            for (const auto& v : g.mesh->vertices)
+              for (int k = 0; k < 3; ++k)
+                d.mix(v[k]);
+            d.mix(g.mesh->triangles.size());
+            for (const auto& t : g.mesh->triangles)
+              d.mix(t);
+          }
+        },
+        part.geometry);
+  }
+}
+
+json settings_json(const PlannerSettings& s) {
+  const InteractionSettings& i = s.interaction;
+  return json{{"range", s.range},
+              {"goal_bias", s.goal_bias},
+              {"extend", std::string(to_string(s.extend))},
+              {"nearest_neighbors", s.nearest_neighbors},
+              {"alpha", i.alpha},
+              {"contact", i.contact},
+              {"contact_samples", i.contact_samples},
+              {"contact_distance", i.contact_distance},
+              {"contact_clearance", i.contact_clearance},
+              {"sampling", std::string(to_string(i.sampling))},
+              {"force_mix", i.force_mix},
+              {"neighbours", i.neighbours},
+              {"sigma", i.sigma},
+              {"uniform_every", i.uniform_every}};
+}
+
+InteractionSettings interaction_from_json(const json& j) {
+  InteractionSettings i;
+  i.alpha = j.at("alpha").get<double>();
+  i.contact = j.at("contact").get<bool>();
+  i.contact_samples = j.at("contact_samples").get<int>();
+  i.contact_distance = j.at("contact_distance").get<double>();
+  i.contact_clearance = j.at("contact_clearance").get<double>();
+  const auto sampling = parse_irrt_sampling(j.at("sampling").get<std::string>());
+  if (!sampling)
+    throw std::invalid_argument("unknown sampling mode");
+  i.sampling = *sampling;
+  i.force_mix = j.at("force_mix").get<double>();
+  i.neighbours = j.at("neighbours").get<int>();
+  i.sigma = j.at("sigma").get<double>();
+  i.uniform_every = j.at("uniform_every").get<int>();
+  return i;
+}
+
+PlannerSettings settings_from_json(const json& j, std::uint64_t seed) {
+  PlannerSettings s;
+  s.seed = seed;
+  s.range = j.at("range").get<double>();
+  s.goal_bias = j.at("goal_bias").get<double>();
+  const auto extend = parse_extend_mode(j.at("extend").get<std::string>());
+  if (!extend)
+    throw std::invalid_argument("unknown extend mode");
+  s.extend = *extend;
+  s.nearest_neighbors = j.at("nearest_neighbors").get<std::string>();
+  s.interaction = interaction_from_json(j);
+  return s;
+}
+
+json config_json(const Config& q) {
+  return json::array({q.t.x(), q.t.y(), q.t.z(), q.q.x(), q.q.y(), q.q.z(), q.q.w()});
+}
+
+Config config_from_json(const json& j) {
+  if (!j.is_array() || j.size() != 7)
+    throw std::invalid_argument("a pose is 7 numbers");
+  Config q;
+  q.t = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+  q.q = Eigen::Quaterniond(j[6].get<double>(), j[3].get<double>(), j[4].get<double>(),
+                           j[5].get<double>());
+  return q;
+}
+
+json digest_json(const JournalDigest& d) {
+  json j;
+  if (d.end_status)
+    j["end"] = *d.end_status;
+  j["digest"] = d.digest;
+  j["steps"] = d.steps;
+  j["iterations"] = d.iterations;
+  j["nodes"] = d.nodes;
+  return j;
+}
+
+}  // namespace
+
+std::uint64_t problem_digest(const Problem& problem) {
+  Digest d;
+  mix_body(d, problem.scene.object);
+  d.mix(problem.scene.obstacles.size());
+  for (const Body& b : problem.scene.obstacles)
+    mix_body(d, b);
+  const Bounds& b = problem.space.bounds();
+  for (int k = 0; k < 3; ++k) {
+    d.mix(b.min[k]);
+    d.mix(b.max[k]);
+  }
+  d.mix(problem.space.kind());
+  d.mix(problem.space.resolution());
+  d.mix(problem.space.weights().translation);
+  d.mix(problem.space.weights().rotation);
+  mix_config(d, problem.start);
+  mix_config(d, problem.goal);
+  return d.value();
+}
+
+std::string format_settings(const PlannerSettings& settings) {
+  return settings_json(settings).dump();
+}
+
+JournalWriter::JournalWriter(const std::filesystem::path& file, const JournalHeader& h)
+    : file_(file) {
+  fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw InputError(file.string(), std::string("cannot be written: ") + std::strerror(errno));
+  json j{{"journal", kMagic},
+         {"version", kVersion},
+         {"problem", h.problem},
+         {"problem_digest", h.problem_digest},
+         {"mode", h.mode},
+         {"seed", h.settings.seed},
+         {"settings", settings_json(h.settings)},
+         {"operator", h.operator_description},
+         {"started", h.started}};
+  write_line(j.dump());
+}
+
+JournalWriter::~JournalWriter() {
+  if (fd_ >= 0)
+    ::close(fd_);
+}
+
+void JournalWriter::write_line(const std::string& line) {
+  std::string text = line + '\n';
+  const char* p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, p, left);
+    if (n < 0) {
+      if (errno == EINTR)
+        continue;
+      throw InputError(file_.string(), std::string("cannot be written: ") + std::strerror(errno));
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+void JournalWriter::operator_state(std::uint64_t iteration, const OperatorState& s) {
+  const Twist& v = s.device.velocity;
+  write_line(json{{"op", iteration},
+                  {"seq", s.sequence},
+                  {"t", s.time},
+                  {"pace", s.pace},
+                  {"q", config_json(s.device.q_device)},
+                  {"v", json::array({v[0], v[1], v[2], v[3], v[4], v[5]})},
+                  {"b", s.device.buttons}}
+                 .dump());
+}
+
+void JournalWriter::params(std::uint64_t steps, const InteractionSettings& settings) {
+  PlannerSettings s;
+  s.interaction = settings;
+  write_line(json{{"params", steps}, {"settings", settings_json(s)}}.dump());
+}
+
+void JournalWriter::digest(const JournalDigest& d) {
+  write_line(digest_json(d).dump());
+}
+
+Journal read_journal(const std::filesystem::path& file) {
+  const std::string text = read_text_file(file);
+  Journal journal;
+  std::size_t line_no = 0, pos = 0;
+  bool have_header = false;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    ++line_no;
+    const std::string where = "line " + std::to_string(line_no);
+    if (end == std::string::npos) {
+      // A last line without its newline: the process was killed while writing it.
+      journal.torn = true;
+      break;
+    }
+    const std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (trim(line).empty())
+      continue;
+    json j;
+    try {
+      j = json::parse(line);
+    } catch (const json::parse_error&) {
+      throw InputError(file.string(), where + ": not a JSON object");
+    }
+    try {
+      if (!have_header) {
+        if (!j.is_object() || j.value("journal", "") != kMagic)
+          throw InputError(file.string(), "not a tandem session journal (no header line)");
+        if (j.at("version").get<int>() != kVersion) {
+          throw InputError(file.string(), "journal version " +
+                                              std::to_string(j.at("version").get<int>()) +
+                                              " (this tandem reads version 1)");
+        }
+        JournalHeader& h = journal.header;
+        h.problem = j.at("problem").get<std::string>();
+        h.problem_digest = j.at("problem_digest").get<std::string>();
+        h.mode = j.at("mode").get<std::string>();
+        h.settings = settings_from_json(j.at("settings"), j.at("seed").get<std::uint64_t>());
+        h.operator_description = j.at("operator").get<std::string>();
+        h.started = j.at("started").get<std::string>();
+        have_header = true;
+      } else if (j.contains("op")) {
+        Journal::OperatorRecord r;
+        r.iteration = j.at("op").get<std::uint64_t>();
+        r.sequence = j.at("seq").get<std::uint64_t>();
+        r.time = j.at("t").get<double>();
+        r.pace = j.at("pace").get<double>();
+        r.device.q_device = config_from_json(j.at("q"));
+        const json& v = j.at("v");
+        if (!v.is_array() || v.size() != 6)
+          throw std::invalid_argument("a velocity is 6 numbers");
+        for (std::size_t k = 0; k < 6; ++k)
+          r.device.velocity[static_cast<Eigen::Index>(k)] = v[k].get<double>();
+        r.device.buttons = j.at("b").get<std::uint32_t>();
+        if (!journal.operator_states.empty() &&
+            r.iteration < journal.operator_states.back().iteration) {
+          throw InputError(file.string(), where + ": operator record before the previous one");
+        }
+        journal.operator_states.push_back(r);
+      } else if (j.contains("params")) {
+        JournalParams p;
+        p.steps = j.at("params").get<std::uint64_t>();
+        p.settings = interaction_from_json(j.at("settings"));
+        if (!journal.params.empty() && p.steps < journal.params.back().steps)
+          throw InputError(file.string(), where + ": parameters before the previous ones");
+        journal.params.push_back(p);
+      } else if (j.contains("digest")) {
+        JournalDigest d;
+        if (j.contains("end"))
+          d.end_status = j.at("end").get<std::string>();
+        d.digest = j.at("digest").get<std::string>();
+        d.steps = j.at("steps").get<std::uint64_t>();
+        d.iterations = j.at("iterations").get<std::uint64_t>();
+        d.nodes = j.at("nodes").get<std::size_t>();
+        if (!journal.digests.empty() && d.steps < journal.digests.back().steps)
+          throw InputError(file.string(), where + ": digest before the previous one");
+        journal.digests.push_back(d);
+      } else {
+        throw InputError(file.string(), where + ": unknown record");
+      }
+    } catch (const json::exception& e) {
+      throw InputError(file.string(), where + ": malformed record (" + e.what() + ")");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(file.string(), where + ": " + e.what());
+    }
+  }
+  if (!have_header)
+    throw InputError(file.string(), "empty: not a tandem session journal");
+  return journal;
+}
+
+}  // namespace tandem

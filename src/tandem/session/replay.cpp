@@ -1,0 +1,66 @@
+#include "tandem/session/replay.hpp"
+
+#include "tandem/core/error.hpp"
+#include "tandem/experiments/run.hpp"
+
+namespace tandem {
+
+ReplayResult replay_journal(const Problem& problem, const Journal& journal,
+                            const std::function<void(const Planner&)>& on_step) {
+  const JournalHeader& h = journal.header;
+  if (format_digest(problem_digest(problem)) != h.problem_digest) {
+    throw InputError(h.problem, "is not the problem this session was recorded on (its digest is " +
+                                    format_digest(problem_digest(problem)) +
+                                    ", the journal's " + h.problem_digest + ")");
+  }
+  const auto mode = parse_planner_mode(h.mode);
+  if (!mode || !is_interactive(*mode))
+    throw InputError(h.problem, "the journal's mode '" + h.mode + "' is not an interactive mode");
+
+  // The operator states as the live planner saw them; the nearest obstacle and the contact frame
+  // are recomputed from q_device, as the operator thread computed them.
+  CollisionChecker checker(problem.scene);
+  OperatorModel model(checker, nullptr);
+  std::vector<FeedRecord> records;
+  records.reserve(journal.operator_states.size());
+  for (const Journal::OperatorRecord& r : journal.operator_states) {
+    records.push_back({r.iteration, model.observe(r.device, r.time, r.pace, r.sequence)});
+  }
+  ReplayFeed feed(std::move(records));
+  InteractionParameters parameters(h.settings.interaction);
+  const Interaction interaction{&feed, &parameters};
+  MotionValidator validator(problem.space, checker);
+  auto planner = make_planner(*mode == PlannerMode::irrt ? "irrt" : "birrt", validator,
+                              problem.start, problem.goal, h.settings, &interaction);
+
+  ReplayResult result;
+  const std::uint64_t last_step = journal.digests.empty() ? 0 : journal.digests.back().steps;
+  std::size_t next_params = 0, next_digest = 0;
+  PlannerStatus status = PlannerStatus::running;
+  while (result.steps < last_step) {
+    while (next_params < journal.params.size() &&
+           journal.params[next_params].steps == result.steps) {
+      parameters.set(journal.params[next_params++].settings);
+    }
+    status = planner->step();
+    ++result.steps;
+    if (on_step)
+      on_step(*planner);
+    while (next_digest < journal.digests.size() &&
+           journal.digests[next_digest].steps == result.steps) {
+      const JournalDigest& d = journal.digests[next_digest++];
+      ++result.digests_checked;
+      if (!result.mismatch_at && format_digest(tree_digest(planner->trees())) != d.digest)
+        result.mismatch_at = d.steps;
+    }
+    if (status != PlannerStatus::running)
+      break;
+  }
+  result.status = status;
+  result.stats = planner->stats();
+  result.digest = format_digest(tree_digest(planner->trees()));
+  result.solution = planner->solution();
+  return result;
+}
+
+}  // namespace tandem
