@@ -1,5 +1,5 @@
-// tandem interactive: a live session, the planner thread and the operator thread together, journaled
-// for exact replay.
+// tandem interactive: a live session, the planner thread and the operator thread together,
+// journaled for exact replay.
 
 #include <csignal>
 #include <filesystem>
@@ -50,8 +50,9 @@ int run_interactive(InteractiveArgs args) {
     args.run.mode = "interactive-contact";
   RunSpec spec = make_spec(args.run, problem);
   if (!is_interactive(spec.mode)) {
-    throw InputError("--mode", "a live session needs an interactive mode (interactive, "
-                               "interactive-contact or irrt)");
+    throw InputError("--mode",
+                     "a live session needs an interactive mode (interactive, "
+                     "interactive-contact or irrt)");
   }
   if (!args.run.time_limit)
     spec.time_limit = 600.0;
@@ -69,8 +70,8 @@ int run_interactive(InteractiveArgs args) {
   options.operator_rate_hz = args.operator_rate;
   options.digest_every_s = args.digest_every;
   LiveSession session(problem, spec, options);
-  std::cout << "tandem interactive: " << problem.name << ", " << to_string(spec.mode)
-            << ", seed " << spec.settings.seed << "; session journal " << args.session << '\n'
+  std::cout << "tandem interactive: " << problem.name << ", " << to_string(spec.mode) << ", seed "
+            << spec.settings.seed << "; session journal " << args.session << '\n'
             << std::flush;
 
   g_session.store(&session);
@@ -80,8 +81,7 @@ int run_interactive(InteractiveArgs args) {
     std::cout << "  " << static_cast<int>(p.elapsed_s) << " s: " << p.stats.iterations
               << " iterations (" << static_cast<long>(p.iterations_per_s) << "/s), "
               << p.stats.nodes << " nodes, " << p.stats.collision_checks
-              << " collision checks; operator "
-              << static_cast<long>(p.operator_rate_hz) << " Hz\n"
+              << " collision checks; operator " << static_cast<long>(p.operator_rate_hz) << " Hz\n"
               << std::flush;
   });
   std::signal(SIGINT, SIG_DFL);
@@ -121,7 +121,8 @@ Command add_interactive_command(CLI::App& app) {
       "or\ntrace:FILE recorded in seconds) on its own thread; the planner takes its latest state "
       "each\niteration. Everything the planner saw is journaled as it happens: 'tandem replay "
       "SESSION'\nrebuilds the same tree. The default mode is interactive-contact, the default time "
-      "limit\n600 s; Ctrl-C ends the session (its journal is complete). Exit 0 if solved, 1 if not, "
+      "limit\n600 s; Ctrl-C ends the session (its journal is complete). Exit 0 if solved, 1 if "
+      "not, "
       "2 for\nbad input.");
   return [args] { return run_interactive(*args); };
 }

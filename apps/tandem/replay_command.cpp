@@ -56,7 +56,8 @@ Command add_replay_command(CLI::App& app) {
   app.add_option("--out", args->out, "Write the replayed path here, if it solved");
   app.footer(
       "Runs the session's planner again in virtual time with the operator states it used, at the\n"
-      "iterations it used them, and its parameter changes, and checks the tree digests the journal\n"
+      "iterations it used them, and its parameter changes, and checks the tree digests the "
+      "journal\n"
       "recorded. Exit 0 if the tree is identical, 1 if it is not, 2 for bad input.");
   return [args] { return run_replay(*args); };
 }

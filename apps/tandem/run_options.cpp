@@ -136,7 +136,6 @@ void add_run_options(CLI::App& app, RunArgs& args) {
                  "I-RRT +CS modes: one uniform sample every x shots (default 10)")
       ->check(CLI::Range(1, 1000000))
       ->group(human);
-
 }
 
 }  // namespace tandem::cli

@@ -59,7 +59,8 @@ TEST(Journal, WritesAndReadsBackEveryRecordExactly) {
   s.time = 0.1 + 0.2;  // not a short decimal
   s.pace = 1.0 / 3.0;
   s.device.q_device.t = {std::acos(-1.0), -1e-17, 2.5};
-  s.device.q_device.q = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  s.device.q_device.q =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
   s.device.velocity << 1, 2, 3, 4, 5, 6.000000000000001;
   s.device.buttons = 5;
   {

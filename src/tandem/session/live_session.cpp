@@ -12,9 +12,10 @@ namespace {
 
 std::shared_ptr<const OperatorSource> live_operator(const Problem& problem, const RunSpec& spec) {
   if (!is_interactive(spec.mode)) {
-    throw InputError("--mode", "a live session needs an interactive mode (interactive, "
-                               "interactive-contact or irrt), not " +
-                                   std::string(to_string(spec.mode)));
+    throw InputError("--mode",
+                     "a live session needs an interactive mode (interactive, "
+                     "interactive-contact or irrt), not " +
+                         std::string(to_string(spec.mode)));
   }
   return make_operator(problem, spec, OperatorClock::seconds);
 }

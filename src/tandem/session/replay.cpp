@@ -10,8 +10,8 @@ ReplayResult replay_journal(const Problem& problem, const Journal& journal,
   const JournalHeader& h = journal.header;
   if (format_digest(problem_digest(problem)) != h.problem_digest) {
     throw InputError(h.problem, "is not the problem this session was recorded on (its digest is " +
-                                    format_digest(problem_digest(problem)) +
-                                    ", the journal's " + h.problem_digest + ")");
+                                    format_digest(problem_digest(problem)) + ", the journal's " +
+                                    h.problem_digest + ")");
   }
   const auto mode = parse_planner_mode(h.mode);
   if (!mode || !is_interactive(*mode))

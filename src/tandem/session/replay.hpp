@@ -19,7 +19,7 @@ struct ReplayResult {
   PlannerStatus status = PlannerStatus::running;
   std::uint64_t steps = 0;
   PlannerStats stats;
-  std::string digest;            ///< of the trees at the end of the replay
+  std::string digest;  ///< of the trees at the end of the replay
   std::size_t digests_checked = 0;
   /// The first recorded digest the replay did not reproduce (its steps), if any.
   std::optional<std::uint64_t> mismatch_at;
