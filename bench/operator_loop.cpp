@@ -1,0 +1,52 @@
+// The human loop's rate: how many operator states a second the operator thread can compute on the
+// papers' scenes — read the device (a simulated operator following the scene's guide), find the
+// nearest obstacle (FCL distance against every obstacle, with the nearest points) and build the
+// contact frame. The papers' operator thread must keep up with a 1 kHz device. A benchmark, not a
+// test: it prints a table.
+//
+//   build/bench/tandem-operator-loop [--seconds S]
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+
+#include "tandem/core/stopwatch.hpp"
+#include "tandem/interaction/operator_model.hpp"
+#include "tandem/operators/guide_follower.hpp"
+#include "tandem/scene/builtin_scenes.hpp"
+#include "tandem/scene/problem_loader.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"The operator loop's rate on the built-in scenes (nearest-obstacle query included)"};
+  double seconds = 2.0;
+  app.add_option("--seconds", seconds, "Time per scene (default 2)")->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
+
+  std::printf(
+      "| scene | obstacles | states/s | mean per state (us) | states with a contact frame |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: |\n");
+  for (const tandem::BuiltinScene& scene : tandem::builtin_scenes()) {
+    const tandem::Problem problem = tandem::load_problem(std::string(scene.name));
+    if (problem.guide.empty())
+      continue;
+    tandem::CollisionChecker checker(problem.scene);
+    const auto profile =
+        tandem::operator_profile("experienced", problem.space, tandem::OperatorClock::seconds);
+    auto source = std::make_shared<tandem::GuideFollower>(problem.space, problem.guide, profile, 1);
+    tandem::OperatorModel model(checker, source);
+    // Walk the whole guide in the measured time, so every part of the scene is queried.
+    const double scale = source->end_time() / seconds;
+    const tandem::Stopwatch watch;
+    std::uint64_t states = 0, framed = 0;
+    double t = 0.0;
+    while ((t = watch.seconds()) < seconds) {
+      const tandem::OperatorState s = model.compute(t * scale, ++states);
+      framed += s.frame.has_value();
+    }
+    std::printf("| %s | %zu | %.0f | %.1f | %.0f%% |\n", problem.name.c_str(),
+                problem.scene.obstacles.size(), static_cast<double>(states) / t,
+                1e6 * t / static_cast<double>(states),
+                100.0 * static_cast<double>(framed) / static_cast<double>(states));
+  }
+  return 0;
+}
