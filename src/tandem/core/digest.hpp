@@ -22,6 +22,16 @@ class Digest {
       h_ *= 0x100000001b3ULL;
     }
   }
+  /// A pose (anything with a translation t and a quaternion q): translation, then w, x, y, z.
+  template <class Pose>
+  void mix_pose(const Pose& p) {
+    for (int k = 0; k < 3; ++k)
+      mix(p.t[k]);
+    mix(p.q.w());
+    mix(p.q.x());
+    mix(p.q.y());
+    mix(p.q.z());
+  }
   void mix_text(const std::string& text) {
     mix(text.size());
     for (char c : text)

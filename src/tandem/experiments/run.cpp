@@ -70,17 +70,26 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec) {
   return execute_run(problem, spec, checker);
 }
 
+std::string_view planner_name(PlannerMode mode) {
+  return mode == PlannerMode::rrt ? "rrt" : (mode == PlannerMode::irrt ? "irrt" : "birrt");
+}
+
+PlannerSettings mode_settings(PlannerMode mode, const PlannerSettings& settings) {
+  PlannerSettings s = settings;
+  if (mode == PlannerMode::birrt || mode == PlannerMode::rrt) {
+    s.interaction.alpha = 1.0;
+    s.interaction.contact = false;
+  } else if (mode == PlannerMode::interactive) {
+    s.interaction.contact = false;
+  } else if (mode == PlannerMode::interactive_contact) {
+    s.interaction.contact = true;
+  }
+  return s;
+}
+
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker) {
   MotionValidator validator(problem.space, checker);
-  PlannerSettings settings = spec.settings;
-  if (spec.mode == PlannerMode::birrt || spec.mode == PlannerMode::rrt) {
-    settings.interaction.alpha = 1.0;
-    settings.interaction.contact = false;
-  } else if (spec.mode == PlannerMode::interactive) {
-    settings.interaction.contact = false;
-  } else if (spec.mode == PlannerMode::interactive_contact) {
-    settings.interaction.contact = true;
-  }
+  const PlannerSettings settings = mode_settings(spec.mode, spec.settings);
 
   RunOutcome outcome;
   std::unique_ptr<VirtualTimeFeed> feed;
@@ -92,10 +101,8 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
                                              spec.operator_period);
     interaction.feed = feed.get();
   }
-  const std::string_view planner_name =
-      spec.mode == PlannerMode::rrt ? "rrt" : (spec.mode == PlannerMode::irrt ? "irrt" : "birrt");
-  auto planner = make_planner(planner_name, validator, problem.start, problem.goal, settings,
-                              interaction.feed != nullptr ? &interaction : nullptr);
+  auto planner = make_planner(planner_name(spec.mode), validator, problem.start, problem.goal,
+                              settings, interaction.feed != nullptr ? &interaction : nullptr);
   Termination termination;
   termination.time_limit_s = spec.time_limit;
   termination.max_iterations = spec.max_iterations;

@@ -61,6 +61,12 @@ struct RunOutcome {
   std::uint64_t tree_digest = 0;
 };
 
+/// The planner a mode runs: "birrt", "rrt" or "irrt" (make_planner's names).
+std::string_view planner_name(PlannerMode mode);
+/// The spec's settings as its mode means them: the computer alone has alpha = 1 and no contact,
+/// interactive has no contact, interactive-contact has it.
+PlannerSettings mode_settings(PlannerMode mode, const PlannerSettings& settings);
+
 /// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or
 /// trace, a trace that cannot be read, a start or goal that is not valid).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec);

@@ -1,9 +1,5 @@
 #include "tandem/planning/planner.hpp"
 
-#include <algorithm>
-#include <cstdio>
-#include <cstring>
-#include <limits>
 #include <stdexcept>
 
 #include "tandem/core/digest.hpp"
@@ -56,13 +52,7 @@ std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
   for (const Tree* tree : trees) {
     d.mix(tree->size());
     for (std::size_t i = 0; i < tree->size(); ++i) {
-      const Config& q = tree->nodes[i];
-      for (int k = 0; k < 3; ++k)
-        d.mix(q.t[k]);
-      d.mix(q.q.w());
-      d.mix(q.q.x());
-      d.mix(q.q.y());
-      d.mix(q.q.z());
+      d.mix_pose(tree->nodes[i]);
       d.mix(tree->parent[i]);
       d.mix(tree->source[i]);
     }

@@ -20,15 +20,6 @@ using nlohmann::json;
 constexpr const char* kMagic = "tandem session";
 constexpr int kVersion = 1;
 
-void mix_config(Digest& d, const Config& q) {
-  for (int k = 0; k < 3; ++k)
-    d.mix(q.t[k]);
-  d.mix(q.q.x());
-  d.mix(q.q.y());
-  d.mix(q.q.z());
-  d.mix(q.q.w());
-}
-
 void mix_body(Digest& d, const Body& body) {
   d.mix_text(body.name);
   d.mix(body.parts.size());
@@ -65,13 +56,8 @@ void mix_body(Digest& d, const Body& body) {
   }
 }
 
-json settings_json(const PlannerSettings& s) {
-  const InteractionSettings& i = s.interaction;
-  return json{{"range", s.range},
-              {"goal_bias", s.goal_bias},
-              {"extend", std::string(to_string(s.extend))},
-              {"nearest_neighbors", s.nearest_neighbors},
-              {"alpha", i.alpha},
+json interaction_json(const InteractionSettings& i) {
+  return json{{"alpha", i.alpha},
               {"contact", i.contact},
               {"contact_samples", i.contact_samples},
               {"contact_distance", i.contact_distance},
@@ -81,6 +67,15 @@ json settings_json(const PlannerSettings& s) {
               {"neighbours", i.neighbours},
               {"sigma", i.sigma},
               {"uniform_every", i.uniform_every}};
+}
+
+json settings_json(const PlannerSettings& s) {
+  json j = interaction_json(s.interaction);
+  j["range"] = s.range;
+  j["goal_bias"] = s.goal_bias;
+  j["extend"] = std::string(to_string(s.extend));
+  j["nearest_neighbors"] = s.nearest_neighbors;
+  return j;
 }
 
 InteractionSettings interaction_from_json(const json& j) {
@@ -157,13 +152,9 @@ std::uint64_t problem_digest(const Problem& problem) {
   d.mix(problem.space.resolution());
   d.mix(problem.space.weights().translation);
   d.mix(problem.space.weights().rotation);
-  mix_config(d, problem.start);
-  mix_config(d, problem.goal);
+  d.mix_pose(problem.start);
+  d.mix_pose(problem.goal);
   return d.value();
-}
-
-std::string format_settings(const PlannerSettings& settings) {
-  return settings_json(settings).dump();
 }
 
 JournalWriter::JournalWriter(const std::filesystem::path& file, const JournalHeader& h)
@@ -217,9 +208,7 @@ void JournalWriter::operator_state(std::uint64_t iteration, const OperatorState&
 }
 
 void JournalWriter::params(std::uint64_t steps, const InteractionSettings& settings) {
-  PlannerSettings s;
-  s.interaction = settings;
-  write_line(json{{"params", steps}, {"settings", settings_json(s)}}.dump());
+  write_line(json{{"params", steps}, {"settings", interaction_json(settings)}}.dump());
 }
 
 void JournalWriter::digest(const JournalDigest& d) {

@@ -99,7 +99,4 @@ class JournalWriter {
 /// record (except a torn last line), or records out of order.
 Journal read_journal(const std::filesystem::path& file);
 
-/// The settings as the journal writes them, and back (throws InputError naming `source`).
-std::string format_settings(const PlannerSettings& settings);
-
 }  // namespace tandem

@@ -20,19 +20,13 @@ std::shared_ptr<const OperatorSource> live_operator(const Problem& problem, cons
   return make_operator(problem, spec, OperatorClock::seconds);
 }
 
-PlannerSettings live_settings(const RunSpec& spec) {
-  PlannerSettings s = spec.settings;
-  s.interaction.contact = spec.mode == PlannerMode::interactive_contact;
-  return s;
-}
-
 JournalHeader header_for(const Problem& problem, const RunSpec& spec, const LiveOptions& options,
                          const OperatorSource& source) {
   JournalHeader h;
   h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
   h.problem_digest = format_digest(problem_digest(problem));
   h.mode = std::string(to_string(spec.mode));
-  h.settings = live_settings(spec);
+  h.settings = spec.settings;
   h.operator_description = source.describe();
   h.started = utc_now_iso8601();
   return h;
@@ -50,21 +44,19 @@ std::string utc_now_iso8601() {
 }
 
 LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const LiveOptions& options)
-    : problem_(problem),
-      spec_(spec),
+    : spec_(spec),
       options_(options),
       source_(live_operator(problem, spec)),
       checker_(problem.scene),
       validator_(problem.space, checker_),
-      feed_(channel_),
-      parameters_(live_settings(spec).interaction),
-      journal_(options.journal, header_for(problem, spec, options, *source_)) {
-  spec_.settings = live_settings(spec);
+      feed_(channel_) {
+  spec_.settings = mode_settings(spec.mode, spec.settings);
+  parameters_.set(spec_.settings.interaction);
+  journal_.emplace(options.journal, header_for(problem, spec_, options, *source_));
   interaction_.feed = &feed_;
   interaction_.parameters = &parameters_;
-  const std::string_view planner_name = spec.mode == PlannerMode::irrt ? "irrt" : "birrt";
-  planner_ = make_planner(planner_name, validator_, problem.start, problem.goal, spec_.settings,
-                          &interaction_);
+  planner_ = make_planner(planner_name(spec.mode), validator_, problem.start, problem.goal,
+                          spec_.settings, &interaction_);
 }
 
 LiveSession::~LiveSession() {
@@ -83,7 +75,7 @@ void LiveSession::journal_feed() {
   if (records.empty())
     return;
   for (const FeedRecord& r : records)
-    journal_.operator_state(r.iteration, r.state);
+    journal_->operator_state(r.iteration, r.state);
   // What a watching operator sees: how far the tree is from where it holds the object now.
   roadmap_distance_.publish(planner_->distance_to_roadmap(records.back().state.device.q_device));
 }
@@ -95,7 +87,7 @@ void LiveSession::journal_digest(const std::optional<std::string>& end_status) {
   d.nodes = planner_->stats().nodes;
   d.digest = format_digest(tree_digest(planner_->trees()));
   d.end_status = end_status;
-  journal_.digest(d);
+  journal_->digest(d);
 }
 
 PlannerStatus LiveSession::run(const std::function<void(const LiveProgress&)>& progress) {
@@ -115,7 +107,7 @@ PlannerStatus LiveSession::run(const std::function<void(const LiveProgress&)>& p
       const std::lock_guard lock(pending_mutex_);
       if (pending_) {
         parameters_.set(*pending_);
-        journal_.params(steps_, *pending_);
+        journal_->params(steps_, *pending_);
         pending_.reset();
       }
       has_pending_.store(false, std::memory_order_relaxed);

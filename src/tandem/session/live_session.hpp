@@ -61,13 +61,12 @@ class LiveSession {
 
   const Planner& planner() const { return *planner_; }
   std::uint64_t steps() const { return steps_; }
-  const std::filesystem::path& journal_file() const { return journal_.file(); }
+  const std::filesystem::path& journal_file() const { return journal_->file(); }
 
  private:
   void journal_feed();
   void journal_digest(const std::optional<std::string>& end_status);
 
-  const Problem& problem_;
   RunSpec spec_;
   LiveOptions options_;
   std::shared_ptr<const OperatorSource> source_;
@@ -79,7 +78,7 @@ class LiveSession {
   InteractionParameters parameters_;
   Interaction interaction_;
   std::unique_ptr<Planner> planner_;
-  JournalWriter journal_;
+  std::optional<JournalWriter> journal_;  ///< opened once the settings are known
   std::unique_ptr<OperatorThread> operator_thread_;
   std::atomic<bool> stop_{false};
   std::uint64_t steps_ = 0;

@@ -30,8 +30,8 @@ ReplayResult replay_journal(const Problem& problem, const Journal& journal,
   InteractionParameters parameters(h.settings.interaction);
   const Interaction interaction{&feed, &parameters};
   MotionValidator validator(problem.space, checker);
-  auto planner = make_planner(*mode == PlannerMode::irrt ? "irrt" : "birrt", validator,
-                              problem.start, problem.goal, h.settings, &interaction);
+  auto planner = make_planner(planner_name(*mode), validator, problem.start, problem.goal,
+                              h.settings, &interaction);
 
   ReplayResult result;
   const std::uint64_t last_step = journal.digests.empty() ? 0 : journal.digests.back().steps;
