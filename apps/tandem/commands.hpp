@@ -18,5 +18,6 @@ Command add_render_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_interactive_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
+Command add_demo_command(CLI::App& app);
 
 }  // namespace tandem::cli

@@ -1,5 +1,5 @@
-// tandem interactive: a live session, the planner thread and the operator thread together,
-// journaled for exact replay.
+// tandem interactive and tandem demo: a live session, the planner thread and the operator thread
+// together, journaled for exact replay, with the web viewer served from this process.
 
 #include <csignal>
 #include <filesystem>
@@ -12,13 +12,18 @@
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/session/live_session.hpp"
+#include "tandem/web/viewer_server.hpp"
+#include "viewer_options.hpp"
 
 namespace tandem::cli {
 namespace {
 
 struct InteractiveArgs {
   RunArgs run;
+  ViewerArgs viewer;
   bool headless = false;
+  bool paused = false;
+  bool exit_when_done = false;
   std::string session;
   double operator_rate = 1000.0;
   double digest_every = 2.0;
@@ -40,11 +45,47 @@ std::string default_session_file(const Problem& problem) {
   return "sessions/" + problem.name + "-" + stamp + ".jsonl";
 }
 
-int run_interactive(InteractiveArgs args) {
-  if (!args.headless) {
-    throw InputError("tandem interactive",
-                     "the web viewer is not part of this build yet: run with --headless");
+/// What the browser may do to a live session.
+class LiveControl final : public ViewerControl {
+ public:
+  explicit LiveControl(LiveSession& session) : session_(session) {}
+  std::optional<std::string> handle(const ClientMessage& m) override {
+    switch (m.kind) {
+      case ClientMessage::Kind::pose:
+        session_.operator_input().set_pose(m.q, m.id);
+        return std::nullopt;
+      case ClientMessage::Kind::input: {
+        std::string why;
+        if (!session_.operator_input().select(m.input, &why))
+          return why;
+        return std::nullopt;
+      }
+      case ClientMessage::Kind::params:
+        session_.set_interaction(m.settings);
+        return std::nullopt;
+      case ClientMessage::Kind::command:
+        if (m.command == "pause")
+          session_.pause();
+        else if (m.command == "resume")
+          session_.resume();
+        else if (m.command == "step")
+          session_.step_once();
+        else
+          session_.reset();
+        return std::nullopt;
+    }
+    return "unknown message";
   }
+  InteractionSettings settings() const override { return session_.interaction(); }
+  std::optional<std::filesystem::path> journal() const override { return session_.journal_file(); }
+
+ private:
+  LiveSession& session_;
+};
+
+int run_interactive(InteractiveArgs args) {
+  if (!args.headless)
+    require_front_end(server_options(args.viewer).web_root);
   const Problem problem = load_problem(args.run.problem);
   if (!args.run.mode)
     args.run.mode = "interactive-contact";
@@ -69,15 +110,33 @@ int run_interactive(InteractiveArgs args) {
   options.journal = args.session;
   options.operator_rate_hz = args.operator_rate;
   options.digest_every_s = args.digest_every;
+  options.stay = !args.headless && !args.exit_when_done;
+  options.start_paused = args.paused;
   LiveSession session(problem, spec, options);
   std::cout << "tandem interactive: " << problem.name << ", " << to_string(spec.mode) << ", seed "
-            << spec.settings.seed << "; session journal " << args.session << '\n'
-            << std::flush;
+            << spec.settings.seed << "; session journal " << args.session << '\n';
+  const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
+  if (!input.spacemouse_available)
+    std::cout << "  " << input.spacemouse_status
+              << ": no SpaceMouse (start spacenavd for one; the browser's inputs work)\n";
+  std::optional<ViewerState> state;
+  std::optional<LiveControl> control;
+  std::optional<ViewerServer> server;
+  if (!args.headless) {
+    state.emplace(problem, std::string(to_string(spec.mode)), false);
+    control.emplace(session);
+    server.emplace(*state, *control, server_options(args.viewer));
+    session.set_observer(&*state);
+    std::cout << "  viewer: " << server->url() << "  (Ctrl-C ends the session)\n";
+  }
+  std::cout << std::flush;
 
   g_session.store(&session);
   std::signal(SIGINT, on_session_signal);
   std::signal(SIGTERM, on_session_signal);
   const PlannerStatus status = session.run([](const LiveProgress& p) {
+    if (p.paused || p.status != PlannerStatus::running)
+      return;
     std::cout << "  " << static_cast<int>(p.elapsed_s) << " s: " << p.stats.iterations
               << " iterations (" << static_cast<long>(p.iterations_per_s) << "/s), "
               << p.stats.nodes << " nodes, " << p.stats.collision_checks
@@ -87,6 +146,7 @@ int run_interactive(InteractiveArgs args) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   g_session.store(nullptr);
+  server.reset();
 
   const PlannerStats& stats = session.planner().stats();
   std::cout << to_string(status) << " after " << stats.iterations << " iterations, " << stats.nodes
@@ -100,12 +160,20 @@ int run_interactive(InteractiveArgs args) {
   return status == PlannerStatus::solved ? 0 : 1;
 }
 
+void add_session_options(CLI::App& app, InteractiveArgs& a) {
+  add_viewer_options(app, a.viewer);
+  app.add_flag("--headless", a.headless, "Run without the web viewer, printing progress");
+  app.add_flag("--paused", a.paused, "Start paused (the viewer resumes or steps)");
+  app.add_flag("--exit-when-done", a.exit_when_done,
+               "With the viewer: end when the planner ends instead of waiting for Ctrl-C");
+}
+
 }  // namespace
 
 Command add_interactive_command(CLI::App& app) {
   auto args = std::make_shared<InteractiveArgs>();
   add_run_options(app, args->run);
-  app.add_flag("--headless", args->headless, "Run without the web viewer, printing progress");
+  add_session_options(app, *args);
   app.add_option("--session", args->session,
                  "Journal the session here (default sessions/NAME-TIME.jsonl)");
   app.add_option("--operator-rate", args->operator_rate,
@@ -117,14 +185,37 @@ Command add_interactive_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out, "Write the path here when solved, in OMPL's path format");
   app.footer(
-      "The operator moves on the wall clock (a simulated operator following the problem's guide, "
-      "or\ntrace:FILE recorded in seconds) on its own thread; the planner takes its latest state "
-      "each\niteration. Everything the planner saw is journaled as it happens: 'tandem replay "
-      "SESSION'\nrebuilds the same tree. The default mode is interactive-contact, the default time "
-      "limit\n600 s; Ctrl-C ends the session (its journal is complete). Exit 0 if solved, 1 if "
-      "not, "
-      "2 for\nbad input.");
+      "Serves the web viewer at the URL it prints (127.0.0.1, with a random token): the scene, "
+      "both\ntrees growing, the part at q_device, tuning. The operator: a simulated operator "
+      "following\nthe problem's guide (experienced, inexperienced), trace:FILE recorded in "
+      "seconds, or\nbrowser (the part waits at the start for you); in the viewer you take over "
+      "at any time\n(drag the part; keyboard, gamepad, SpaceMouse by WebHID or spacenavd). The "
+      "operator runs on\nits own thread on the wall clock; the planner takes its latest state "
+      "each iteration.\nEverything the planner saw is journaled as it happens: 'tandem replay "
+      "SESSION' rebuilds the\nsame tree. The default mode is interactive-contact, the default "
+      "time limit 600 s of\nplanning; Ctrl-C ends the session (its journal is complete). Exit 0 "
+      "if solved, 1 if not,\n2 for bad input.");
   return [args] { return run_interactive(*args); };
+}
+
+Command add_demo_command(CLI::App& app) {
+  auto args = std::make_shared<InteractiveArgs>();
+  add_session_options(app, *args);
+  app.add_option("--seed", args->run.seed, "The planner's seed (default 1)");
+  app.add_option("--session", args->session,
+                 "Journal the session here (default sessions/NAME-TIME.jsonl)");
+  app.footer(
+      "The built-in environment 1 (cluttered-1) with contact sampling: an experienced simulated\n"
+      "operator moves the part along the scene's guide until you take over in the viewer (drag "
+      "the\npart, or use the keyboard, a gamepad or a SpaceMouse). Prints the viewer's URL; "
+      "Ctrl-C\nends the session, whose journal 'tandem replay' reproduces exactly.");
+  return [args] {
+    args->run.problem.problem = "cluttered-1";
+    args->run.mode = "interactive-contact";
+    if (!args->run.alpha)
+      args->run.alpha = 0.5;
+    return run_interactive(*args);
+  };
 }
 
 }  // namespace tandem::cli

@@ -46,6 +46,10 @@ int run(int argc, char** argv) {
       tandem::cli::add_interactive_command);
   add("replay", "Rebuild a live session's tree from its journal and check it is identical",
       tandem::cli::add_replay_command);
+  add("demo",
+      "The built-in environment 1 live in the web viewer, a simulated operator until you "
+      "take over",
+      tandem::cli::add_demo_command);
 
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

@@ -1,11 +1,19 @@
 // tandem replay: rebuild a live session's tree from its journal, exactly.
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "tandem/core/stopwatch.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/session/replay.hpp"
+#include "tandem/web/viewer_server.hpp"
+#include "viewer_options.hpp"
 
 namespace tandem::cli {
 namespace {
@@ -14,9 +22,55 @@ struct ReplayArgs {
   std::string session;
   std::vector<std::string> allowed_dirs;
   std::string out;
+  bool serve = false;
+  ViewerArgs viewer;
+  double speed = 1.0;
+  bool exit_when_done = false;
 };
 
+/// A replay is watched, not steered.
+class ReadOnlyControl final : public ViewerControl {
+ public:
+  explicit ReadOnlyControl(InteractionSettings settings) : settings_(settings) {}
+  std::optional<std::string> handle(const ClientMessage&) override {
+    return "this is a replay: it shows the recorded session and takes no input";
+  }
+  InteractionSettings settings() const override { return settings_; }
+  std::optional<std::filesystem::path> journal() const override { return std::nullopt; }
+
+ private:
+  InteractionSettings settings_;
+};
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_replay_signal(int) {
+  g_stop.store(true);
+}
+
+std::string replay_status_json(const Planner& planner, const Journal& journal, double t,
+                               bool done) {
+  const PlannerStats& s = planner.stats();
+  return nlohmann::json{
+      {"type", "status"},
+      {"status", done ? std::string(to_string(planner.status())) : std::string("replaying")},
+      {"paused", false},
+      {"mode", journal.header.mode},
+      {"planner", std::string(planner.name())},
+      {"seed", journal.header.settings.seed},
+      {"elapsed_s", t},
+      {"iterations", s.iterations},
+      {"nodes", s.nodes},
+      {"edges", s.edges},
+      {"collision_checks", s.collision_checks},
+      {"nodes_by_source", s.nodes_by_source},
+      {"input", "replay"},
+      {"replay", true}}
+      .dump();
+}
+
 int run_replay(const ReplayArgs& args) {
+  if (args.serve)
+    require_front_end(server_options(args.viewer).web_root);
   const Journal journal = read_journal(args.session);
   ProblemArgs problem_args;
   problem_args.problem = journal.header.problem;
@@ -27,7 +81,40 @@ int run_replay(const ReplayArgs& args) {
               << "seconds): nothing to replay\n";
     return 1;
   }
-  const ReplayResult r = replay_journal(problem, journal);
+  std::optional<ViewerState> state;
+  std::optional<ReadOnlyControl> control;
+  std::optional<ViewerServer> server;
+  ReplayStep on_step;
+  const Stopwatch watch;
+  double next_update = 0.0;
+  std::uint64_t steps = 0;
+  if (args.serve) {
+    state.emplace(problem, journal.header.mode, true);
+    control.emplace(journal.header.settings.interaction);
+    server.emplace(*state, *control, server_options(args.viewer));
+    std::cout << "viewer: " << server->url() << "  (Ctrl-C ends)\n" << std::flush;
+    std::signal(SIGINT, on_replay_signal);
+    std::signal(SIGTERM, on_replay_signal);
+    // At the recorded pace (the operator's clock), times --speed; 0: as fast as possible.
+    on_step = [&](const Planner& planner, const OperatorState* op, bool last) {
+      ++steps;
+      if (args.speed > 0.0 && op != nullptr && (steps & 31) == 0) {
+        const double lead = op->time / args.speed - watch.seconds();
+        if (lead > 0.0)
+          std::this_thread::sleep_for(std::chrono::duration<double>(std::min(lead, 1.0)));
+      }
+      const double t = watch.seconds();
+      if (t >= next_update || last) {
+        state->update(planner, replay_status_json(planner, journal, t, last),
+                      operator_json(op, planner.settings().interaction, problem.space, nullptr));
+        next_update = t + 1.0 / 30.0;
+      }
+    };
+  }
+  const ReplayResult r = replay_journal(problem, journal, on_step, [&] {
+    if (state)
+      state->restarted();
+  });
   std::cout << args.session << ": replayed " << r.steps << " steps, " << r.stats.iterations
             << " iterations, " << r.stats.nodes << " nodes; " << to_string(r.status) << "; tree "
             << r.digest;
@@ -36,13 +123,18 @@ int run_replay(const ReplayArgs& args) {
   std::cout << '\n';
   if (r.status == PlannerStatus::solved && !args.out.empty())
     write_path_file(args.out, r.solution, problem.space);
-  if (!r.matched()) {
+  const bool matched = r.matched();
+  if (!matched)
     std::cout << "different from the session's tree at step " << *r.mismatch_at << '\n';
-    return 1;
+  else
+    std::cout << "identical to the session's tree (" << r.digests_checked
+              << " recorded digests checked)\n";
+  if (server && !args.exit_when_done) {
+    std::cout << "the viewer shows the replayed session; Ctrl-C ends\n" << std::flush;
+    while (!g_stop.load())
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  std::cout << "identical to the session's tree (" << r.digests_checked
-            << " recorded digests checked)\n";
-  return 0;
+  return matched ? 0 : 1;
 }
 
 }  // namespace
@@ -54,6 +146,13 @@ Command add_replay_command(CLI::App& app) {
   app.add_option("--allow-dir", args->allowed_dirs,
                  "A folder the problem may read meshes and URDFs from, besides its own");
   app.add_option("--out", args->out, "Write the replayed path here, if it solved");
+  app.add_flag("--serve", args->serve, "Show the replay in the web viewer");
+  add_viewer_options(app, args->viewer);
+  app.add_option("--speed", args->speed,
+                 "With --serve: times the recorded pace (default 1; 0: as fast as possible)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--exit-when-done", args->exit_when_done,
+               "With --serve: end when the replay ends instead of waiting for Ctrl-C");
   app.footer(
       "Runs the session's planner again in virtual time with the operator states it used, at the\n"
       "iterations it used them, and its parameter changes, and checks the tree digests the "

@@ -365,7 +365,10 @@ TEST(Cli, AnInteractiveSessionReplaysToTheIdenticalTree) {
 
 TEST(Cli, InteractiveAndReplayRejectBadInput) {
   TempDir dir;
-  expect_bad_input({"interactive", "cluttered-1"}, {"--headless"});
+  const std::string nowhere = (dir.path() / "nowhere").string();
+  expect_bad_input({"interactive", "cluttered-1", "--web-root", nowhere},
+                   {"nowhere", "front end is not built", "--headless"});
+  expect_bad_input({"replay", "x.jsonl", "--serve", "--web-root", nowhere}, {"nowhere"});
   expect_bad_input({"interactive", "cluttered-1", "--headless", "--mode", "birrt"},
                    {"--mode", "interactive mode"});
   expect_bad_input({"replay", (dir.path() / "none.jsonl").string()}, {"none.jsonl"});

@@ -202,5 +202,95 @@ TEST(Replay, RefusesAnotherProblem) {
   EXPECT_THROW(replay_journal(other, read_journal(file)), InputError);
 }
 
+/// Waits (up to 10 s) until `done` holds, checking every millisecond.
+template <class F>
+bool eventually(F done) {
+  for (int k = 0; k < 10000; ++k) {
+    if (done())
+      return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
+}
+
+TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
+  const Problem problem = detour_problem();
+  test::TempDir dir;
+  LiveOptions options;
+  options.journal = dir.path() / "live.jsonl";
+  options.digest_every_s = 0.02;
+  options.stay = true;  // as with the viewer: stays after solving until stopped
+  options.spacemouse = false;
+  RunSpec spec = live_spec(5);
+  spec.settings.interaction.alpha = 0.0;
+  LiveSession session(problem, spec, options);
+  PlannerStatus status = PlannerStatus::running;
+  std::thread planner([&] { status = session.run(); });
+
+  ASSERT_TRUE(eventually([&] { return session.progress().stats.nodes > 3; }));
+  session.pause();
+  ASSERT_TRUE(eventually([&] { return session.progress().paused; }));
+  const std::uint64_t paused_at = session.progress().steps;
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  EXPECT_EQ(session.progress().steps, paused_at) << "a paused session steps";
+  session.step_once();
+  session.step_once();
+  EXPECT_TRUE(eventually([&] { return session.progress().steps == paused_at + 2; }));
+  // A person takes over from the simulated operator where the part is, and moves it.
+  Config held = problem.start;
+  held.t.y() += 0.2;
+  session.operator_input().set_pose(held, 7);
+  EXPECT_EQ(session.operator_input().snapshot().input, OperatorInput::browser);
+  session.reset();
+  session.resume();
+  ASSERT_TRUE(eventually([&] { return session.progress().resets == 1; }));
+  ASSERT_TRUE(session.operator_input().select(OperatorInput::simulated));
+  EXPECT_TRUE(eventually([&] { return session.progress().stats.nodes > 3; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  session.stop();
+  planner.join();
+  const std::string live_digest = format_digest(tree_digest(session.planner().trees()));
+
+  const Journal journal = read_journal(options.journal);
+  ASSERT_EQ(journal.resets.size(), 1u);
+  EXPECT_GE(journal.resets[0], paused_at + 2);
+  EXPECT_EQ(journal.digests.back().digest, live_digest);
+  EXPECT_EQ(journal.digests.back().end_status, std::string(to_string(status)));
+  std::size_t restarts = 0;
+  const ReplayResult replay = replay_journal(problem, journal, {}, [&] { ++restarts; });
+  EXPECT_EQ(restarts, 1u);
+  EXPECT_TRUE(replay.matched()) << "mismatch at step " << replay.mismatch_at.value_or(0);
+  EXPECT_EQ(replay.digest, live_digest);
+}
+
+TEST(OperatorSwitch, TakesOverWhereThePartIsAndKeepsItInTheSpace) {
+  const Problem problem = detour_problem();
+  RunSpec spec = live_spec(1);
+  const auto simulated = make_operator(problem, spec, OperatorClock::seconds);
+  OperatorSwitch input(problem.space, simulated, problem.start);
+  const DeviceReading a = input.read(0.5);
+  EXPECT_EQ(a.q_device, simulated->read(0.5).q_device) << "the simulated operator has the part";
+  std::string why;
+  EXPECT_FALSE(input.select(OperatorInput::spacemouse, &why));
+  EXPECT_THAT(why, HasSubstr("spacenavd"));
+  ASSERT_TRUE(input.select(OperatorInput::browser));
+  EXPECT_EQ(input.read(5.0).q_device, a.q_device) << "the person takes the part where it was";
+  Config far = problem.start;
+  far.t = {1e6, -1e6, 0.0};
+  far.q = Eigen::Quaterniond(2.0, 0.0, 0.0, 0.0);  // not unit
+  input.set_pose(far, 3);
+  const DeviceReading b = input.read(5.1);
+  EXPECT_TRUE(problem.space.satisfies_bounds(b.q_device)) << "clamped to the bounds";
+  EXPECT_NEAR(b.q_device.q.norm(), 1.0, 1e-12);
+  EXPECT_EQ(b.input_id, 3u);
+  EXPECT_TRUE(input.input_time(3).has_value());
+  EXPECT_FALSE(input.input_time(2).has_value());
+
+  OperatorSwitch alone(problem.space, nullptr, problem.start);
+  EXPECT_EQ(alone.snapshot().input, OperatorInput::browser);
+  EXPECT_EQ(alone.read(1.0).q_device, problem.start) << "without an operator the part waits";
+  EXPECT_FALSE(alone.select(OperatorInput::simulated, &why));
+}
+
 }  // namespace
 }  // namespace tandem

@@ -88,6 +88,8 @@ class ReplayFeed final : public OperatorFeed {
  public:
   explicit ReplayFeed(std::vector<FeedRecord> record) : record_(std::move(record)) {}
   const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
+  /// The state the planner was given last, if any.
+  const OperatorState* current() const { return current_; }
 
  private:
   std::vector<FeedRecord> record_;

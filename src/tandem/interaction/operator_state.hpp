@@ -24,6 +24,9 @@ struct DeviceReading {
   Config q_device;
   Twist velocity = Twist::Zero();
   std::uint32_t buttons = 0;
+  /// The live input event this reading came from (0: none); for measuring input-to-tree latency,
+  /// not journaled.
+  std::uint64_t input_id = 0;
 };
 
 struct OperatorState {

@@ -13,6 +13,7 @@
 
 #include "tandem/interaction/latest_value.hpp"
 #include "tandem/interaction/operator_feed.hpp"
+#include "tandem/space/se3_space.hpp"
 
 namespace tandem {
 

@@ -10,6 +10,7 @@
 
 #include "tandem/core/digest.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/io/json_codec.hpp"
 #include "tandem/io/text.hpp"
 
 namespace tandem {
@@ -56,19 +57,6 @@ void mix_body(Digest& d, const Body& body) {
   }
 }
 
-json interaction_json(const InteractionSettings& i) {
-  return json{{"alpha", i.alpha},
-              {"contact", i.contact},
-              {"contact_samples", i.contact_samples},
-              {"contact_distance", i.contact_distance},
-              {"contact_clearance", i.contact_clearance},
-              {"sampling", std::string(to_string(i.sampling))},
-              {"force_mix", i.force_mix},
-              {"neighbours", i.neighbours},
-              {"sigma", i.sigma},
-              {"uniform_every", i.uniform_every}};
-}
-
 json settings_json(const PlannerSettings& s) {
   json j = interaction_json(s.interaction);
   j["range"] = s.range;
@@ -76,24 +64,6 @@ json settings_json(const PlannerSettings& s) {
   j["extend"] = std::string(to_string(s.extend));
   j["nearest_neighbors"] = s.nearest_neighbors;
   return j;
-}
-
-InteractionSettings interaction_from_json(const json& j) {
-  InteractionSettings i;
-  i.alpha = j.at("alpha").get<double>();
-  i.contact = j.at("contact").get<bool>();
-  i.contact_samples = j.at("contact_samples").get<int>();
-  i.contact_distance = j.at("contact_distance").get<double>();
-  i.contact_clearance = j.at("contact_clearance").get<double>();
-  const auto sampling = parse_irrt_sampling(j.at("sampling").get<std::string>());
-  if (!sampling)
-    throw std::invalid_argument("unknown sampling mode");
-  i.sampling = *sampling;
-  i.force_mix = j.at("force_mix").get<double>();
-  i.neighbours = j.at("neighbours").get<int>();
-  i.sigma = j.at("sigma").get<double>();
-  i.uniform_every = j.at("uniform_every").get<int>();
-  return i;
 }
 
 PlannerSettings settings_from_json(const json& j, std::uint64_t seed) {
@@ -108,20 +78,6 @@ PlannerSettings settings_from_json(const json& j, std::uint64_t seed) {
   s.nearest_neighbors = j.at("nearest_neighbors").get<std::string>();
   s.interaction = interaction_from_json(j);
   return s;
-}
-
-json config_json(const Config& q) {
-  return json::array({q.t.x(), q.t.y(), q.t.z(), q.q.x(), q.q.y(), q.q.z(), q.q.w()});
-}
-
-Config config_from_json(const json& j) {
-  if (!j.is_array() || j.size() != 7)
-    throw std::invalid_argument("a pose is 7 numbers");
-  Config q;
-  q.t = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-  q.q = Eigen::Quaterniond(j[6].get<double>(), j[3].get<double>(), j[4].get<double>(),
-                           j[5].get<double>());
-  return q;
 }
 
 json digest_json(const JournalDigest& d) {
@@ -215,6 +171,10 @@ void JournalWriter::digest(const JournalDigest& d) {
   write_line(digest_json(d).dump());
 }
 
+void JournalWriter::reset(std::uint64_t steps) {
+  write_line(json{{"reset", steps}}.dump());
+}
+
 Journal read_journal(const std::filesystem::path& file) {
   const std::string text = read_text_file(file);
   Journal journal;
@@ -269,7 +229,9 @@ Journal read_journal(const std::filesystem::path& file) {
         for (std::size_t k = 0; k < 6; ++k)
           r.device.velocity[static_cast<Eigen::Index>(k)] = v[k].get<double>();
         r.device.buttons = j.at("b").get<std::uint32_t>();
+        r.segment = journal.resets.size();
         if (!journal.operator_states.empty() &&
+            journal.operator_states.back().segment == r.segment &&
             r.iteration < journal.operator_states.back().iteration) {
           throw InputError(file.string(), where + ": operator record before the previous one");
         }
@@ -281,6 +243,11 @@ Journal read_journal(const std::filesystem::path& file) {
         if (!journal.params.empty() && p.steps < journal.params.back().steps)
           throw InputError(file.string(), where + ": parameters before the previous ones");
         journal.params.push_back(p);
+      } else if (j.contains("reset")) {
+        const auto steps = j.at("reset").get<std::uint64_t>();
+        if (!journal.resets.empty() && steps < journal.resets.back())
+          throw InputError(file.string(), where + ": reset before the previous one");
+        journal.resets.push_back(steps);
       } else if (j.contains("digest")) {
         JournalDigest d;
         if (j.contains("end"))

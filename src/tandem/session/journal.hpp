@@ -8,13 +8,17 @@
 //   {"op":123,"seq":57,"t":0.0571,"pace":0.0571,"q":[x,y,z,qx,qy,qz,qw],"v":[6 numbers],"b":0}
 //   {"params":4000,"settings":{…}}
 //   {"digest":"…","steps":50000,"iterations":49999,"nodes":1234}
+//   {"reset":52000}
+//   {"op":3,"seq":1234,…}
 //   {"end":"solved","steps":61234,"iterations":61233,"nodes":2345,"digest":"…"}
 //
 // "op" records the planner iteration from which the planner used that operator state (what a
 // LiveFeed records; the nearest obstacle and contact frame are recomputed from q_device on replay,
 // which FCL does identically); "params" the planner step after which new interaction settings
 // applied; "digest" records, written every few seconds, let a replay check itself even when the
-// session was killed before its "end". Numbers are written so that they read back bit for bit.
+// session was killed before its "end". "reset" records the step after which the user started the
+// planner over (new trees, same seed): the "op" records after it count the new planner's
+// iterations. Numbers are written so that they read back bit for bit.
 //
 // Each record is handed to the kernel with one write(2) as soon as it is made: a process that is
 // killed loses nothing it recorded (a torn last line, if the kill came mid-write, is ignored when
@@ -65,6 +69,7 @@ struct Journal {
   /// The operator's device readings, with the iteration from which the planner used each.
   struct OperatorRecord {
     std::uint64_t iteration = 0;
+    std::size_t segment = 0;  ///< resets before it: which planner used it
     std::uint64_t sequence = 0;
     double time = 0.0, pace = 0.0;
     DeviceReading device;
@@ -72,6 +77,7 @@ struct Journal {
   std::vector<OperatorRecord> operator_states;
   std::vector<JournalParams> params;
   std::vector<JournalDigest> digests;  ///< in order; the "end" record last, if the session ended
+  std::vector<std::uint64_t> resets;   ///< steps after which the planner was started over
   bool torn = false;                   ///< the last line was cut short (the process was killed)
 };
 
@@ -86,6 +92,7 @@ class JournalWriter {
   void operator_state(std::uint64_t iteration, const OperatorState& state);
   void params(std::uint64_t steps, const InteractionSettings& settings);
   void digest(const JournalDigest& d);
+  void reset(std::uint64_t steps);
   const std::filesystem::path& file() const { return file_; }
 
  private:

@@ -10,14 +10,24 @@
 namespace tandem {
 namespace {
 
-std::shared_ptr<const OperatorSource> live_operator(const Problem& problem, const RunSpec& spec) {
+std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunSpec& spec,
+                                              bool spacemouse) {
   if (!is_interactive(spec.mode)) {
     throw InputError("--mode",
                      "a live session needs an interactive mode (interactive, "
                      "interactive-contact or irrt), not " +
                          std::string(to_string(spec.mode)));
   }
-  return make_operator(problem, spec, OperatorClock::seconds);
+  std::shared_ptr<const OperatorSource> simulated;
+  if (spec.operator_name != "browser")
+    simulated = make_operator(problem, spec, OperatorClock::seconds);
+  std::unique_ptr<SpaceNav> nav;
+  if (spacemouse) {
+    std::string why;
+    nav = SpaceNav::open(&why);
+  }
+  return std::make_shared<OperatorSwitch>(problem.space, std::move(simulated), problem.start,
+                                          std::move(nav));
 }
 
 JournalHeader header_for(const Problem& problem, const RunSpec& spec, const LiveOptions& options,
@@ -44,19 +54,22 @@ std::string utc_now_iso8601() {
 }
 
 LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const LiveOptions& options)
-    : spec_(spec),
+    : problem_(problem),
+      spec_(spec),
       options_(options),
-      source_(live_operator(problem, spec)),
+      switch_(live_operator(problem, spec, options.spacemouse)),
       checker_(problem.scene),
       validator_(problem.space, checker_),
       feed_(channel_) {
   spec_.settings = mode_settings(spec.mode, spec.settings);
   parameters_.set(spec_.settings.interaction);
-  journal_.emplace(options.journal, header_for(problem, spec_, options, *source_));
+  settings_now_ = spec_.settings.interaction;
+  paused_ = options.start_paused;
+  journal_.emplace(options.journal, header_for(problem, spec_, options, *switch_));
   interaction_.feed = &feed_;
   interaction_.parameters = &parameters_;
-  planner_ = make_planner(planner_name(spec.mode), validator_, problem.start, problem.goal,
-                          spec_.settings, &interaction_);
+  interaction_.guidance = &guidance_channel_;
+  start_planner();
 }
 
 LiveSession::~LiveSession() {
@@ -64,10 +77,78 @@ LiveSession::~LiveSession() {
     operator_thread_->stop();
 }
 
+void LiveSession::start_planner() {
+  planner_.reset();
+  planner_ = make_planner(planner_name(spec_.mode), validator_, problem_.start, problem_.goal,
+                          spec_.settings, &interaction_);
+  status_ = PlannerStatus::running;
+  have_guidance_ = false;
+}
+
 void LiveSession::set_interaction(const InteractionSettings& settings) {
   const std::lock_guard lock(pending_mutex_);
-  pending_ = settings;
+  pending_.settings = settings;
+  settings_now_ = settings;
   has_pending_.store(true, std::memory_order_release);
+}
+
+void LiveSession::pause() {
+  const std::lock_guard lock(pending_mutex_);
+  pending_.paused = true;
+  has_pending_.store(true, std::memory_order_release);
+}
+
+void LiveSession::resume() {
+  const std::lock_guard lock(pending_mutex_);
+  pending_.paused = false;
+  has_pending_.store(true, std::memory_order_release);
+}
+
+void LiveSession::step_once() {
+  const std::lock_guard lock(pending_mutex_);
+  ++pending_.steps;
+  has_pending_.store(true, std::memory_order_release);
+}
+
+void LiveSession::reset() {
+  const std::lock_guard lock(pending_mutex_);
+  pending_.reset = true;
+  has_pending_.store(true, std::memory_order_release);
+}
+
+InteractionSettings LiveSession::interaction() const {
+  const std::lock_guard lock(pending_mutex_);
+  return settings_now_;
+}
+
+LiveProgress LiveSession::progress() const {
+  const std::lock_guard lock(pending_mutex_);
+  return progress_;
+}
+
+void LiveSession::apply_commands() {
+  if (!has_pending_.load(std::memory_order_acquire))
+    return;
+  Pending p;
+  {
+    const std::lock_guard lock(pending_mutex_);
+    p = std::exchange(pending_, {});
+    has_pending_.store(false, std::memory_order_relaxed);
+  }
+  if (p.reset) {
+    journal_->reset(steps_);
+    ++resets_;
+    start_planner();
+    if (observer_ != nullptr)
+      observer_->restarted();
+  }
+  if (p.settings) {
+    parameters_.set(*p.settings);
+    journal_->params(steps_, *p.settings);
+  }
+  if (p.paused)
+    paused_ = *p.paused;
+  steps_requested_ += p.steps;
 }
 
 void LiveSession::journal_feed() {
@@ -76,8 +157,23 @@ void LiveSession::journal_feed() {
     return;
   for (const FeedRecord& r : records)
     journal_->operator_state(r.iteration, r.state);
+  last_state_ = records.back().state;
+  have_state_ = true;
   // What a watching operator sees: how far the tree is from where it holds the object now.
-  roadmap_distance_.publish(planner_->distance_to_roadmap(records.back().state.device.q_device));
+  roadmap_distance_.publish(planner_->distance_to_roadmap(last_state_.device.q_device));
+}
+
+void LiveSession::measure_latency() {
+  // The first operator node grown after a browser event reached the session: its latency.
+  // Called after a step that added operator nodes (see run()).
+  const std::uint64_t id = last_state_.device.input_id;
+  if (!have_state_ || id == 0 || id == latency_id_)
+    return;
+  const auto received = switch_->input_time(id);
+  if (!received)
+    return;
+  latency_id_ = id;
+  latency_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - *received).count();
 }
 
 void LiveSession::journal_digest(const std::optional<std::string>& end_status) {
@@ -92,60 +188,106 @@ void LiveSession::journal_digest(const std::optional<std::string>& end_status) {
 
 PlannerStatus LiveSession::run(const std::function<void(const LiveProgress&)>& progress) {
   operator_thread_ = std::make_unique<OperatorThread>(
-      OperatorModel(checker_, source_), channel_, options_.operator_rate_hz, &roadmap_distance_);
+      OperatorModel(checker_, switch_), channel_, options_.operator_rate_hz, &roadmap_distance_);
   // The planner starts with the operator's first state in hand.
   while (channel_.latest() == nullptr && !stop_.load(std::memory_order_relaxed))
     std::this_thread::sleep_for(std::chrono::microseconds(100));
 
+  static constexpr auto kOperator = static_cast<std::size_t>(NodeSource::operator_);
   const Stopwatch watch;
-  double next_report = 1.0, next_digest = options_.digest_every_s;
-  std::uint64_t iterations_at_report = 0;
-  double last_report = 0.0;
-  PlannerStatus status = PlannerStatus::running;
-  while (status == PlannerStatus::running) {
-    if (has_pending_.load(std::memory_order_acquire)) {
-      const std::lock_guard lock(pending_mutex_);
-      if (pending_) {
-        parameters_.set(*pending_);
-        journal_->params(steps_, *pending_);
-        pending_.reset();
-      }
-      has_pending_.store(false, std::memory_order_relaxed);
+  double planning_s = 0.0;  // planning time since the start or the last reset, pauses out
+  double last_tick = 0.0, next_report = 1.0, next_digest = options_.digest_every_s;
+  double next_observe = 0.0, rate_t0 = 0.0;
+  std::uint64_t rate_iterations0 = 0, resets_seen = 0;
+  double iterations_per_s = 0.0;
+  std::uint64_t since_check = 0;
+  while (!stop_.load(std::memory_order_relaxed)) {
+    apply_commands();
+    if (resets_ != resets_seen) {
+      resets_seen = resets_;
+      planning_s = 0.0;
+      rate_iterations0 = 0;
     }
-    status = planner_->step();
-    ++steps_;
-    journal_feed();
-    if (status != PlannerStatus::running)
-      break;
-    if ((steps_ & 63) != 0)
-      continue;
+    const bool may_step = status_ == PlannerStatus::running && (!paused_ || steps_requested_ > 0);
+    bool stepped_by_hand = false;
+    if (may_step) {
+      if (paused_) {
+        --steps_requested_;
+        stepped_by_hand = true;
+      }
+      const std::size_t operator_nodes = planner_->stats().nodes_by_source[kOperator];
+      status_ = planner_->step();
+      ++steps_;
+      journal_feed();
+      if (planner_->stats().nodes_by_source[kOperator] != operator_nodes)
+        measure_latency();
+      if (status_ != PlannerStatus::running) {
+        if (!options_.stay)
+          break;
+        journal_digest(std::nullopt);
+      }
+      // The clock is read every 64 steps (a step is a few microseconds).
+      if (++since_check < 64 && !stepped_by_hand && status_ == PlannerStatus::running)
+        continue;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    since_check = 0;
     const double t = watch.seconds();
-    if (stop_.load(std::memory_order_relaxed)) {
-      status = PlannerStatus::interrupted;
-    } else if (t >= spec_.time_limit) {
-      status = PlannerStatus::timeout;
+    if (may_step && !stepped_by_hand)
+      planning_s += t - last_tick;
+    last_tick = t;
+    if (status_ == PlannerStatus::running && planning_s >= spec_.time_limit) {
+      status_ = PlannerStatus::timeout;
+      if (!options_.stay)
+        break;
+      journal_digest(std::nullopt);
     }
     if (t >= next_digest) {
       journal_digest(std::nullopt);
       next_digest = t + options_.digest_every_s;
     }
-    if (progress && t >= next_report) {
+    if (const Guidance* g = guidance_channel_.latest()) {
+      last_guidance_ = *g;
+      have_guidance_ = true;
+    }
+    const bool report = t >= next_report;
+    if (t >= next_observe || report || stepped_by_hand) {
+      if (t - rate_t0 >= 0.5) {
+        const std::uint64_t it = planner_->stats().iterations;
+        iterations_per_s = static_cast<double>(it - rate_iterations0) / (t - rate_t0);
+        rate_iterations0 = it;
+        rate_t0 = t;
+      }
       LiveProgress p;
       p.stats = planner_->stats();
+      p.status = status_;
       p.steps = steps_;
-      p.elapsed_s = t;
-      p.iterations_per_s =
-          static_cast<double>(p.stats.iterations - iterations_at_report) / (t - last_report);
+      p.resets = resets_;
+      p.paused = paused_;
+      p.elapsed_s = planning_s;
+      p.iterations_per_s = status_ == PlannerStatus::running && !paused_ ? iterations_per_s : 0.0;
       p.operator_rate_hz = operator_thread_->achieved_rate();
-      progress(p);
-      iterations_at_report = p.stats.iterations;
-      last_report = t;
-      next_report = t + 1.0;
+      p.input_latency_s = latency_s_;
+      p.input_latency_id = latency_id_;
+      {
+        const std::lock_guard lock(pending_mutex_);
+        progress_ = p;
+      }
+      if (observer_ != nullptr)
+        observer_->observe(*this, *planner_);
+      next_observe = t + options_.observe_every_s;
+      if (report && progress) {
+        progress(p);
+        next_report = t + 1.0;
+      }
     }
   }
+  if (status_ == PlannerStatus::running)
+    status_ = PlannerStatus::interrupted;
   operator_thread_->stop();
-  journal_digest(std::string(to_string(status)));
-  return status;
+  journal_digest(std::string(to_string(status_)));
+  return status_;
 }
 
 }  // namespace tandem

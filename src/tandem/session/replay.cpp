@@ -6,7 +6,7 @@
 namespace tandem {
 
 ReplayResult replay_journal(const Problem& problem, const Journal& journal,
-                            const std::function<void(const Planner&)>& on_step) {
+                            const ReplayStep& on_step, const std::function<void()>& on_reset) {
   const JournalHeader& h = journal.header;
   if (format_digest(problem_digest(problem)) != h.problem_digest) {
     throw InputError(h.problem, "is not the problem this session was recorded on (its digest is " +
@@ -17,45 +17,65 @@ ReplayResult replay_journal(const Problem& problem, const Journal& journal,
   if (!mode || !is_interactive(*mode))
     throw InputError(h.problem, "the journal's mode '" + h.mode + "' is not an interactive mode");
 
-  // The operator states as the live planner saw them; the nearest obstacle and the contact frame
-  // are recomputed from q_device, as the operator thread computed them.
+  // The operator states as the live planner saw them, one list per planner (the user may have
+  // started over); the nearest obstacle and the contact frame are recomputed from q_device, as the
+  // operator thread computed them.
   CollisionChecker checker(problem.scene);
   OperatorModel model(checker, nullptr);
-  std::vector<FeedRecord> records;
-  records.reserve(journal.operator_states.size());
+  std::vector<std::vector<FeedRecord>> segments(journal.resets.size() + 1);
   for (const Journal::OperatorRecord& r : journal.operator_states) {
-    records.push_back({r.iteration, model.observe(r.device, r.time, r.pace, r.sequence)});
+    segments.at(r.segment).push_back(
+        {r.iteration, model.observe(r.device, r.time, r.pace, r.sequence)});
   }
-  ReplayFeed feed(std::move(records));
   InteractionParameters parameters(h.settings.interaction);
-  const Interaction interaction{&feed, &parameters};
   MotionValidator validator(problem.space, checker);
-  auto planner = make_planner(planner_name(*mode), validator, problem.start, problem.goal,
-                              h.settings, &interaction);
+  std::unique_ptr<ReplayFeed> feed;
+  Interaction interaction{nullptr, &parameters};
+  std::unique_ptr<Planner> planner;
+  auto start_planner = [&](std::size_t segment) {
+    planner.reset();
+    feed = std::make_unique<ReplayFeed>(std::move(segments[segment]));
+    interaction.feed = feed.get();
+    planner = make_planner(planner_name(*mode), validator, problem.start, problem.goal, h.settings,
+                           &interaction);
+  };
+  start_planner(0);
 
   ReplayResult result;
   const std::uint64_t last_step = journal.digests.empty() ? 0 : journal.digests.back().steps;
-  std::size_t next_params = 0, next_digest = 0;
+  std::size_t next_params = 0, next_digest = 0, next_reset = 0;
   PlannerStatus status = PlannerStatus::running;
   while (result.steps < last_step) {
+    while (next_reset < journal.resets.size() && journal.resets[next_reset] == result.steps) {
+      start_planner(++next_reset);
+      status = PlannerStatus::running;
+      if (on_reset)
+        on_reset();
+    }
     while (next_params < journal.params.size() &&
            journal.params[next_params].steps == result.steps) {
       parameters.set(journal.params[next_params++].settings);
     }
-    status = planner->step();
-    ++result.steps;
+    if (status == PlannerStatus::running) {
+      status = planner->step();
+      ++result.steps;
+    } else if (next_reset < journal.resets.size()) {
+      result.steps = journal.resets[next_reset];  // the live session idled until the reset
+    } else {
+      break;
+    }
     if (on_step)
-      on_step(*planner);
+      on_step(*planner, feed->current(), false);
     while (next_digest < journal.digests.size() &&
-           journal.digests[next_digest].steps == result.steps) {
+           journal.digests[next_digest].steps <= result.steps) {
       const JournalDigest& d = journal.digests[next_digest++];
       ++result.digests_checked;
       if (!result.mismatch_at && format_digest(tree_digest(planner->trees())) != d.digest)
         result.mismatch_at = d.steps;
     }
-    if (status != PlannerStatus::running)
-      break;
   }
+  if (on_step)
+    on_step(*planner, feed->current(), true);
   result.status = status;
   result.stats = planner->stats();
   result.digest = format_digest(tree_digest(planner->trees()));

@@ -1,0 +1,201 @@
+#include "tandem/web/protocol.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "tandem/io/json_codec.hpp"
+
+namespace tandem {
+namespace {
+
+using nlohmann::json;
+
+double finite_number(const json& j, const char* field) {
+  if (!j.is_number())
+    throw ProtocolError(std::string(field) + " must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v))
+    throw ProtocolError(std::string(field) + " must be finite");
+  return v;
+}
+
+double number_in(const json& j, const char* field, double lo, double hi) {
+  const double v = finite_number(j, field);
+  if (v < lo || v > hi) {
+    throw ProtocolError(std::string(field) + " must be in [" + json(lo).dump() + ", " +
+                        json(hi).dump() + "]");
+  }
+  return v;
+}
+
+Config parse_pose(const json& j) {
+  if (!j.is_array() || j.size() != 7)
+    throw ProtocolError("q must be 7 numbers: x y z qx qy qz qw");
+  double v[7];
+  for (std::size_t k = 0; k < 7; ++k)
+    v[k] = number_in(j[k], "q", -1e9, 1e9);
+  Config q;
+  q.t = {v[0], v[1], v[2]};
+  q.q = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
+  const double norm = q.q.norm();
+  if (!(norm > 1e-6))
+    throw ProtocolError("q's quaternion must not be zero");
+  q.q.coeffs() /= norm;
+  return q;
+}
+
+InteractionSettings parse_params(const json& j, InteractionSettings s) {
+  bool any = false;
+  for (const auto& [key, value] : j.items()) {
+    if (key == "type")
+      continue;
+    any = true;
+    if (key == "alpha") {
+      s.alpha = number_in(value, "alpha", 0.0, 1.0);
+    } else if (key == "contact") {
+      if (!value.is_boolean())
+        throw ProtocolError("contact must be true or false");
+      s.contact = value.get<bool>();
+    } else if (key == "contact_samples") {
+      s.contact_samples = static_cast<int>(number_in(value, "contact_samples", 1, 1000));
+    } else if (key == "contact_distance") {
+      s.contact_distance = number_in(value, "contact_distance", 0.0, 1e6);
+    } else if (key == "sigma") {
+      s.sigma = number_in(value, "sigma", 0.0, 1e6);
+    } else if (key == "force_mix") {
+      s.force_mix = number_in(value, "force_mix", 0.0, 1.0);
+    } else if (key == "sampling") {
+      const auto mode =
+          value.is_string() ? parse_irrt_sampling(value.get<std::string>()) : std::nullopt;
+      if (!mode)
+        throw ProtocolError("sampling must be mag, path, mag+cs or path+cs");
+      s.sampling = *mode;
+    } else {
+      throw ProtocolError("unknown parameter '" + key.substr(0, 40) + "'");
+    }
+  }
+  if (!any)
+    throw ProtocolError("params names no parameter");
+  return s;
+}
+
+template <class T>
+void append(std::string& out, const T* data, std::size_t n) {
+  static_assert(std::endian::native == std::endian::little, "the protocol is little endian");
+  out.append(reinterpret_cast<const char*>(data), n * sizeof(T));
+}
+
+json body_json(const Body& body) {
+  json positions = json::array(), indices = json::array();
+  std::uint32_t base = 0;
+  for (const Part& part : body.parts) {
+    const TriangleMesh mesh = tessellate(part.geometry);
+    for (const Eigen::Vector3d& v : mesh.vertices) {
+      const Eigen::Vector3d p = part.pose * v;
+      for (int k = 0; k < 3; ++k)
+        positions.push_back(static_cast<float>(p[k]));
+    }
+    for (const auto& t : mesh.triangles) {
+      for (std::uint32_t i : t)
+        indices.push_back(base + i);
+    }
+    base += static_cast<std::uint32_t>(mesh.vertices.size());
+  }
+  return json{{"name", body.name},
+              {"color", {body.color.r, body.color.g, body.color.b, body.color.a}},
+              {"positions", std::move(positions)},
+              {"indices", std::move(indices)}};
+}
+
+}  // namespace
+
+ClientMessage parse_client_message(std::string_view text, const InteractionSettings& current) {
+  if (text.size() > kMaxMessageBytes)
+    throw ProtocolError("message too long");
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error&) {
+    throw ProtocolError("not JSON");
+  }
+  if (!j.is_object() || !j.contains("type") || !j["type"].is_string())
+    throw ProtocolError("a message is a JSON object with a \"type\"");
+  const std::string type = j["type"].get<std::string>();
+  ClientMessage m;
+  if (type == "pose") {
+    m.kind = ClientMessage::Kind::pose;
+    if (!j.contains("q"))
+      throw ProtocolError("pose needs q");
+    m.q = parse_pose(j["q"]);
+    if (j.contains("id")) {
+      if (!j["id"].is_number_unsigned())
+        throw ProtocolError("id must be a non-negative integer");
+      m.id = j["id"].get<std::uint64_t>();
+    }
+  } else if (type == "input") {
+    m.kind = ClientMessage::Kind::input;
+    const auto input = j.contains("input") && j["input"].is_string()
+                           ? parse_operator_input(j["input"].get<std::string>())
+                           : std::nullopt;
+    if (!input)
+      throw ProtocolError("input must be simulated, browser or spacemouse");
+    m.input = *input;
+  } else if (type == "params") {
+    m.kind = ClientMessage::Kind::params;
+    m.settings = parse_params(j, current);
+  } else if (type == "command") {
+    m.kind = ClientMessage::Kind::command;
+    m.command = j.contains("command") && j["command"].is_string() ? j["command"].get<std::string>()
+                                                                  : std::string();
+    if (m.command != "pause" && m.command != "resume" && m.command != "step" &&
+        m.command != "reset") {
+      throw ProtocolError("command must be pause, resume, step or reset");
+    }
+  } else {
+    throw ProtocolError("unknown message type '" + type.substr(0, 40) + "'");
+  }
+  return m;
+}
+
+std::string encode_scene(const Problem& problem) {
+  json obstacles = json::array();
+  for (const Body& body : problem.scene.obstacles)
+    obstacles.push_back(body_json(body));
+  json guide = json::array();
+  for (const Config& q : problem.guide)
+    guide.push_back(config_json(q));
+  const Bounds& b = problem.space.bounds();
+  return json{
+      {"name", problem.name},
+      {"planar", problem.space.planar()},
+      {"bounds",
+       {{"min", {b.min.x(), b.min.y(), b.min.z()}}, {"max", {b.max.x(), b.max.y(), b.max.z()}}}},
+      {"extent", problem.space.translation_extent()},
+      {"start", config_json(problem.start)},
+      {"goal", config_json(problem.goal)},
+      {"guide", std::move(guide)},
+      {"object", body_json(problem.scene.object)},
+      {"obstacles", std::move(obstacles)}}
+      .dump();
+}
+
+std::string encode_nodes(const NodeBatch& batch) {
+  const auto count = static_cast<std::uint32_t>(batch.size());
+  std::string out;
+  out.reserve(16 + 21 * count + 4);
+  const std::uint8_t head[4] = {1, batch.tree, 0, 0};
+  out.append(reinterpret_cast<const char*>(head), 4);
+  append(out, &batch.generation, 1);
+  append(out, &batch.first, 1);
+  append(out, &count, 1);
+  append(out, batch.positions.data(), batch.positions.size());
+  append(out, batch.parents.data(), batch.parents.size());
+  append(out, batch.sources.data(), batch.sources.size());
+  out.append((4 - count % 4) % 4, '\0');
+  append(out, batch.labels.data(), batch.labels.size());
+  return out;
+}
+
+}  // namespace tandem

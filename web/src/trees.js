@@ -1,0 +1,216 @@
+// The planner's trees in three.js: per tree, one LineSegments and one Points over preallocated
+// buffers that grow by doubling; new nodes are appended (the server sends deltas only) and the draw
+// range is extended, so a frame costs the same with 100k edges as with 100.
+import * as THREE from 'three';
+
+export const SOURCE_COLOURS = [
+  new THREE.Color(0xffffff), // root
+  new THREE.Color(0x60a5fa), // random
+  new THREE.Color(0xfb923c), // operator
+  new THREE.Color(0x4ade80), // contact
+];
+const NO_PARENT = 0xffffffff;
+const AUTO_NODES = 25000;
+
+/** Decodes a binary node message (see src/tandem/web/protocol.hpp). */
+export function decodeNodes(buffer) {
+  const view = new DataView(buffer);
+  if (view.getUint8(0) !== 1) throw new Error('not a node message');
+  const tree = view.getUint8(1);
+  const generation = view.getUint32(4, true);
+  const first = view.getUint32(8, true);
+  const count = view.getUint32(12, true);
+  const positions = new Float32Array(buffer, 16, 3 * count);
+  const parents = new Uint32Array(buffer, 16 + 12 * count, count);
+  const sources = new Uint8Array(buffer, 16 + 16 * count, count);
+  const pad = (4 - (count % 4)) % 4;
+  const labels = new Float32Array(buffer, 16 + 17 * count + pad, count);
+  return { tree, generation, first, count, positions, parents, sources, labels };
+}
+
+function labelColour(label, out) {
+  // Distance to goal over the space's extent: near the goal green, far red.
+  const t = Math.max(0, Math.min(1, label < 0 ? 1 : label));
+  return out.setHSL(0.33 * (1 - t), 0.85, 0.55);
+}
+
+class TreeView {
+  constructor(scene, index) {
+    this.index = index;
+    this.count = 0;
+    this.capacity = 0;
+    this.nodePositions = new Float32Array(0);
+    this.sources = new Uint8Array(0);
+    this.labels = new Float32Array(0);
+    this.parents = new Uint32Array(0);
+    this.edges = 0;
+    this.lineGeometry = new THREE.BufferGeometry();
+    this.pointGeometry = new THREE.BufferGeometry();
+    this.lines = new THREE.LineSegments(
+      this.lineGeometry,
+      new THREE.LineBasicMaterial({ vertexColors: true }));
+    this.points = new THREE.Points(
+      this.pointGeometry,
+      new THREE.PointsMaterial({ vertexColors: true, size: 2, sizeAttenuation: false }));
+    this.lines.frustumCulled = false;
+    this.points.frustumCulled = false;
+    scene.add(this.lines, this.points);
+    this.grow(1024);
+  }
+
+  grow(capacity) {
+    const copy = (Type, old, n) => { const a = new Type(n); a.set(old); return a; };
+    this.nodePositions = copy(Float32Array, this.nodePositions, 3 * capacity);
+    this.sources = copy(Uint8Array, this.sources, capacity);
+    this.labels = copy(Float32Array, this.labels, capacity);
+    this.parents = copy(Uint32Array, this.parents, capacity);
+    const oldLine = this.lineGeometry.getAttribute('position');
+    const linePos = new Float32Array(6 * capacity), lineCol = new Float32Array(6 * capacity);
+    if (oldLine) {
+      linePos.set(oldLine.array);
+      lineCol.set(this.lineGeometry.getAttribute('color').array);
+    }
+    const pointCol = new Float32Array(3 * capacity);
+    const oldPointCol = this.pointGeometry.getAttribute('color');
+    if (oldPointCol) pointCol.set(oldPointCol.array);
+    const dyn = (array) => new THREE.BufferAttribute(array, 3).setUsage(THREE.DynamicDrawUsage);
+    this.lineGeometry.setAttribute('position', dyn(linePos));
+    this.lineGeometry.setAttribute('color', dyn(lineCol));
+    // The points share the node positions array.
+    this.pointGeometry.setAttribute('position', dyn(this.nodePositions));
+    this.pointGeometry.setAttribute('color', dyn(pointCol));
+    this.capacity = capacity;
+  }
+
+  add(batch, colourBy) {
+    if (batch.first !== this.count) return false; // out of order: the caller resynchronises
+    const needed = this.count + batch.count;
+    if (needed > this.capacity) {
+      let c = this.capacity;
+      while (c < needed) c *= 2;
+      this.grow(c);
+    }
+    const linePos = this.lineGeometry.getAttribute('position');
+    const lineCol = this.lineGeometry.getAttribute('color');
+    const pointCol = this.pointGeometry.getAttribute('color');
+    const colour = new THREE.Color();
+    const firstEdge = this.edges;
+    for (let k = 0; k < batch.count; ++k) {
+      const i = this.count + k;
+      this.nodePositions.set(batch.positions.subarray(3 * k, 3 * k + 3), 3 * i);
+      this.sources[i] = batch.sources[k];
+      this.labels[i] = batch.labels[k];
+      this.parents[i] = batch.parents[k];
+      this.nodeColour(i, colourBy, colour);
+      pointCol.array.set([colour.r, colour.g, colour.b], 3 * i);
+      const p = batch.parents[k];
+      if (p !== NO_PARENT && p < i) {
+        const e = this.edges++;
+        linePos.array.set(this.nodePositions.subarray(3 * p, 3 * p + 3), 6 * e);
+        linePos.array.set(this.nodePositions.subarray(3 * i, 3 * i + 3), 6 * e + 3);
+        lineCol.array.set([colour.r, colour.g, colour.b, colour.r, colour.g, colour.b], 6 * e);
+      }
+    }
+    this.count = needed;
+    // Upload only the new part.
+    const upload = (attr, from, to) => {
+      attr.clearUpdateRanges();
+      attr.addUpdateRange(from, to - from);
+      attr.needsUpdate = true;
+    };
+    upload(linePos, 6 * firstEdge, 6 * this.edges);
+    upload(lineCol, 6 * firstEdge, 6 * this.edges);
+    const pointPos = this.pointGeometry.getAttribute('position');
+    upload(pointPos, 3 * batch.first, 3 * needed);
+    upload(pointCol, 3 * batch.first, 3 * needed);
+    this.lineGeometry.setDrawRange(0, 2 * this.edges);
+    this.pointGeometry.setDrawRange(0, this.count);
+    return true;
+  }
+
+  nodeColour(i, colourBy, out) {
+    if (colourBy === 'label' && this.labels[i] >= 0) return labelColour(this.labels[i], out);
+    return out.copy(SOURCE_COLOURS[this.sources[i]] ?? SOURCE_COLOURS[1]);
+  }
+
+  recolour(colourBy) {
+    const lineCol = this.lineGeometry.getAttribute('color');
+    const pointCol = this.pointGeometry.getAttribute('color');
+    const colour = new THREE.Color();
+    let e = 0;
+    for (let i = 0; i < this.count; ++i) {
+      this.nodeColour(i, colourBy, colour);
+      pointCol.array.set([colour.r, colour.g, colour.b], 3 * i);
+      if (this.parents[i] !== NO_PARENT && this.parents[i] < i)
+        lineCol.array.set([colour.r, colour.g, colour.b, colour.r, colour.g, colour.b], 6 * e++);
+    }
+    lineCol.clearUpdateRanges();
+    pointCol.clearUpdateRanges();
+    lineCol.needsUpdate = true;
+    pointCol.needsUpdate = true;
+  }
+
+  dispose(scene) {
+    scene.remove(this.lines, this.points);
+    this.lineGeometry.dispose();
+    this.pointGeometry.dispose();
+  }
+}
+
+/** All trees of the session; `counts` for the status and the tests. */
+export class Trees {
+  constructor(scene) {
+    this.scene = scene;
+    this.views = [];
+    this.colourBy = 'source';
+    this.showNodes = 'auto';
+    this.generation = 0;
+  }
+  /** 'auto' (nodes drawn up to AUTO_NODES per tree: a software renderer spends most of a frame
+   * on point sprites), 'on' or 'off'. Edges are always drawn. */
+  setShowNodes(mode) {
+    this.showNodes = mode;
+    for (const v of this.views) this.updateNodes(v);
+  }
+  updateNodes(v) {
+    v.points.visible = this.showNodes === 'on' || (this.showNodes === 'auto' && v.count <= AUTO_NODES);
+  }
+  clear(generation) {
+    for (const v of this.views) v.dispose(this.scene);
+    this.views = [];
+    this.generation = generation;
+  }
+  add(batch) {
+    if (batch.generation !== this.generation) return true; // an old generation's leftovers
+    while (this.views.length <= batch.tree) this.views.push(new TreeView(this.scene, this.views.length));
+    const v = this.views[batch.tree];
+    const ok = v.add(batch, this.colourBy);
+    this.updateNodes(v);
+    return ok;
+  }
+  setColourBy(mode) {
+    this.colourBy = mode;
+    for (const v of this.views) v.recolour(mode);
+  }
+  counts() {
+    const bySource = [0, 0, 0, 0];
+    let nodes = 0, edges = 0;
+    for (const v of this.views) {
+      nodes += v.count;
+      edges += v.edges;
+      for (let i = 0; i < v.count; ++i) bySource[v.sources[i]]++;
+    }
+    return { nodes, edges, bySource };
+  }
+  /** The positions of the operator nodes of the tree rooted at the start, newest last. */
+  operatorNodes(since = 0) {
+    const out = [];
+    for (const v of this.views) {
+      for (let i = since; i < v.count; ++i) {
+        if (v.sources[i] === 2) out.push([v.nodePositions[3 * i], v.nodePositions[3 * i + 1],
+          v.nodePositions[3 * i + 2]]);
+      }
+    }
+    return out;
+  }
+}

@@ -1,0 +1,287 @@
+// The viewer in a real browser (Debian's headless Chromium, driven by playwright-core), against a
+// real tandem process: the page loads, the tree grows, dragging the part adds operator nodes where
+// it is dragged, α changes the share of operator nodes, tuning and reset work and the session
+// still replays to the identical tree, a request without the token is refused, hostile messages
+// are refused without disturbing the planner, a replay drives the viewer, the path can be saved.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync, writeFileSync } from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import {
+  startTandem, stopTandem, launchBrowser, openViewer, artefactPath, scratch, sleep, tandemBin,
+} from './harness.mjs';
+
+let browser;
+before(async () => { browser = await launchBrowser(); });
+after(async () => { await browser?.close(); });
+
+const dir = scratch();
+const session = (name) => path.join(dir, `${name}.jsonl`);
+const live = (name, extra) => ['interactive', ...extra, '--port', '0', '--session', session(name)];
+
+function counts(page) { return page.evaluate(() => window.tandem.counts()); }
+
+async function waitFor(page, fn, arg, timeout = 20000) {
+  await page.waitForFunction(fn, arg, { timeout, polling: 100 });
+}
+
+function request(port, { path: p = '/', headers = {} } = {}) {
+  return new Promise((resolve, reject) => {
+    const req = http.request({ host: '127.0.0.1', port, path: p, headers }, (res) => {
+      let body = '';
+      res.on('data', (d) => { body += d; });
+      res.on('end', () => resolve({ status: res.statusCode, body }));
+    });
+    req.on('error', reject);
+    req.end();
+  });
+}
+
+test('the page loads, shows the scene and the tree grows', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('grows', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5']));
+  try {
+    const page = await openViewer(browser, run);
+    const hello = await page.evaluate(() => window.tandem.hello);
+    assert.equal(hello.problem, 'cluttered-2');
+    assert.equal(await page.locator('#problem').textContent(), 'cluttered-2');
+    await waitFor(page, () => window.tandem.counts().nodes > 200);
+    const a = await counts(page);
+    await sleep(2000);
+    const b = await counts(page);
+    assert.ok(b.nodes > a.nodes, `the tree grows: ${a.nodes} then ${b.nodes} nodes`);
+    assert.ok(b.edges >= b.nodes - 2, 'every node but the roots has its edge');
+    const status = await page.evaluate(() => window.tandem.status);
+    assert.ok(status.iterations > 0 && status.collision_checks > 0);
+    assert.match(await page.locator('#status').textContent(), /iterations\/s/);
+    await waitFor(page, () => window.tandem.frames > 10);
+    await page.screenshot({ path: artefactPath('viewer.png') });
+    assert.deepEqual(page.logs.filter((l) => l.startsWith('page error')), []);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('a request without the token, from another host name or origin is refused', { timeout: 60000 }, async () => {
+  const run = await startTandem(live('token', ['cluttered-1', '--paused']));
+  try {
+    const host = `127.0.0.1:${run.port}`;
+    assert.equal((await request(run.port, { headers: { Host: host } })).status, 403);
+    assert.equal((await request(run.port, { path: '/api/scene?token=wrong', headers: { Host: host } })).status, 403);
+    const ok = await request(run.port, { path: `/api/scene?token=${run.token}`, headers: { Host: host } });
+    assert.equal(ok.status, 200);
+    const rebinding = await request(run.port, { path: `/?token=${run.token}`, headers: { Host: `evil.example:${run.port}` } });
+    assert.equal(rebinding.status, 403, 'DNS rebinding: a foreign Host is refused');
+    const upgrade = { Host: host, Connection: 'Upgrade', Upgrade: 'websocket', 'Sec-WebSocket-Version': '13',
+      'Sec-WebSocket-Key': 'dGhlIHNhbXBsZSBub25jZQ==' };
+    const foreign = await request(run.port, { path: `/ws?token=${run.token}`, headers: { ...upgrade, Origin: 'http://evil.example' } });
+    assert.equal(foreign.status, 403, 'a WebSocket from another origin is refused');
+    const noToken = await request(run.port, { path: '/ws', headers: upgrade });
+    assert.equal(noToken.status, 403, 'a WebSocket without the token is refused');
+    // And in a browser that never had the token: the page is refused, its socket never opens.
+    const context = await browser.newContext();
+    try {
+      const page = await context.newPage();
+      const response = await page.goto(`http://127.0.0.1:${run.port}/`);
+      assert.equal(response.status(), 403);
+      const opened = await page.evaluate((port) => new Promise((resolve) => {
+        const ws = new WebSocket(`ws://127.0.0.1:${port}/ws`);
+        ws.onopen = () => resolve(true);
+        ws.onerror = () => resolve(false);
+      }), run.port);
+      assert.equal(opened, false);
+    } finally {
+      await context.close();
+    }
+    assert.match(run.errors, /refused .* missing or wrong token/);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('dragging the part adds operator nodes where it is dragged', { timeout: 90000 }, async () => {
+  // α = 0: every iteration grows toward the part; the operator is the browser only.
+  const run = await startTandem(live('drag', ['cluttered-1', '--mode', 'interactive', '--alpha', '0', '--operator', 'browser']));
+  try {
+    const page = await openViewer(browser, run);
+    await waitFor(page, () => window.tandem.operator);
+    const before = await page.evaluate(() => window.tandem.operator.q);
+    const from = await page.evaluate(() => window.tandem.partScreen());
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let k = 1; k <= 10; ++k) await page.mouse.move(from.x + 4 * k, from.y - 9 * k);
+    await page.mouse.up();
+    await sleep(300); // the last pointer events reach the gizmo
+    const dragged = await page.evaluate(() => window.tandem.partPose());
+    const moved = Math.hypot(dragged[0] - before[0], dragged[1] - before[1], dragged[2] - before[2]);
+    assert.ok(moved > 0.2, `the drag moved the part (${moved.toFixed(3)} m)`);
+    // The operator thread takes the pose; the planner grows a node there.
+    await waitFor(page, (q) => {
+      const op = window.tandem.operator;
+      return op && Math.hypot(op.q[0] - q[0], op.q[1] - q[1], op.q[2] - q[2]) < 1e-3;
+    }, dragged);
+    await waitFor(page, (q) => window.tandem.operatorNodes().some(
+      (p) => Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) < 0.05), dragged);
+    const status = await page.evaluate(() => window.tandem.status);
+    assert.equal(status.input, 'browser');
+    const near = await page.evaluate((q) => window.tandem.operatorNodes().filter(
+      (p) => Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) < 0.05).length, dragged);
+    assert.ok(near >= 1, 'an operator node where the part was dragged');
+    await page.screenshot({ path: artefactPath('viewer-drag.png') });
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+async function operatorShare(page, ms) {
+  const a = await counts(page);
+  await sleep(ms);
+  const b = await counts(page);
+  const added = b.nodes - a.nodes;
+  return { added, share: (b.bySource[2] - a.bySource[2]) / Math.max(added, 1) };
+}
+
+async function setAlpha(page, value) {
+  await page.locator('#alpha').fill(String(value));
+  await page.locator('#alpha').dispatchEvent('change');
+  await waitFor(page, (v) => Math.abs(window.tandem.status.settings.alpha - v) < 1e-9, value);
+}
+
+/** A recorded operator (seconds) that swings the part to and fro near environment 2's start. */
+function swingTrace() {
+  const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
+  const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];
+  for (let k = 0; k <= 6000; ++k) {
+    const t = k / 50;
+    lines.push(`${t} ${-0.9 + 0.1 * Math.sin(t)} 0.25 ${1.2 + 0.03 * Math.cos(3 * t) - 0.03} 0 0 ${s} ${c} 0`);
+  }
+  const file = path.join(dir, 'swing.trace');
+  writeFileSync(file, `${lines.join('\n')}\n`);
+  return file;
+}
+
+test('changing α in the viewer changes the share of operator nodes', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('alpha', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5',
+    '--operator', `trace:${swingTrace()}`]));
+  try {
+    const page = await openViewer(browser, run);
+    await setAlpha(page, 0.9);
+    const computer = await operatorShare(page, 4000);
+    await setAlpha(page, 0.1);
+    const operator = await operatorShare(page, 4000);
+    assert.ok(computer.added > 50 && operator.added > 50, `nodes were added (${computer.added}, ${operator.added})`);
+    assert.ok(operator.share > computer.share + 0.2,
+      `operator nodes: ${(100 * computer.share).toFixed(0)}% at α 0.9, ${(100 * operator.share).toFixed(0)}% at α 0.1`);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('pause, step, reset and tuning from the viewer; the session replays to the identical tree', { timeout: 120000 }, async () => {
+  const file = session('tuning');
+  const run = await startTandem(live('tuning', ['cluttered-2', '--mode', 'interactive-contact', '--alpha', '0.5']));
+  try {
+    const page = await openViewer(browser, run);
+    await waitFor(page, () => window.tandem.counts().nodes > 100);
+    await page.click('#pause');
+    await waitFor(page, () => window.tandem.status.paused);
+    const paused = await page.evaluate(() => window.tandem.status.steps);
+    await sleep(500);
+    assert.equal(await page.evaluate(() => window.tandem.status.steps), paused, 'paused: no steps');
+    for (let k = 0; k < 3; ++k) await page.click('#step');
+    await waitFor(page, (s) => window.tandem.status.steps === s + 3, paused);
+    await page.locator('#contact_samples').fill('25');
+    await page.locator('#contact_samples').dispatchEvent('change');
+    await waitFor(page, () => window.tandem.status.settings.contact_samples === 25);
+    await page.click('#reset');
+    await waitFor(page, () => window.tandem.status.resets === 1 && window.tandem.counts().nodes <= 2);
+    await page.click('#resume');
+    await waitFor(page, () => !window.tandem.status.paused && window.tandem.counts().nodes > 50);
+    await setAlpha(page, 0.3);
+  } finally {
+    await stopTandem(run);
+  }
+  assert.equal(run.exited.code, 1, 'interrupted, not solved');
+  const journal = readFileSync(file, 'utf8');
+  assert.match(journal, /"reset":/);
+  assert.match(journal, /"params":/);
+  const out = execFileSync(tandemBin, ['replay', file], { encoding: 'utf8' });
+  assert.match(out, /identical to the session's tree/);
+});
+
+test('hostile messages are refused with an error; a viewer that goes away does not disturb the planner', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('hostile', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5']));
+  try {
+    const page = await openViewer(browser, run);
+    const replies = await page.evaluate(async ({ port, token }) => {
+      const ws = new WebSocket(`ws://127.0.0.1:${port}/ws?token=${token}`);
+      const errors = [];
+      ws.onmessage = (e) => { if (typeof e.data === 'string' && JSON.parse(e.data).type === 'error') errors.push(JSON.parse(e.data).message); };
+      await new Promise((r) => { ws.onopen = r; });
+      for (const m of ['not json', '[1,2]', '{"type":"pose","q":[1,2]}', '{"type":"pose","q":[0,0,0,0,0,0,0]}',
+        '{"type":"params","alpha":7}', '{"type":"params","contact_samples":"many"}', '{"type":"nope"}',
+        '{"type":"command","command":"rm -rf"}', '{"type":"pose","q":[1e308,0,0,0,0,0,1]}'])
+        ws.send(m);
+      await new Promise((r) => setTimeout(r, 1000));
+      const closed = new Promise((r) => { ws.onclose = r; });
+      ws.send('x'.repeat(100000)); // over the limit: the server closes this socket
+      await closed;
+      return errors;
+    }, { port: run.port, token: run.token });
+    assert.equal(replies.length, 9, `one error per bad message: ${JSON.stringify(replies)}`);
+    assert.match(run.errors, /refused a message from 127\.0\.0\.1: not JSON/);
+    await page.close(); // the viewer goes away
+    const before = JSON.parse((await request(run.port, { path: `/api/scene?token=${run.token}`, headers: { Host: `127.0.0.1:${run.port}` } })).status === 200 ? '1' : '0');
+    assert.equal(before, 1);
+    const progress = (s) => Number([...s.matchAll(/(\d+) iterations \(/g)].at(-1)?.[1] ?? 0);
+    const a = progress(run.output);
+    await sleep(2500);
+    assert.ok(progress(run.output) > a, 'the planner goes on');
+    const again = await openViewer(browser, run);
+    await waitFor(again, () => window.tandem.counts().nodes > 100);
+    await again.close();
+    assert.equal(run.exited, null, 'tandem is still running');
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('a solved session: the path and the session can be saved from the viewer', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('solve', ['cluttered-1', '--mode', 'interactive-contact', '--alpha', '0.5']));
+  try {
+    const page = await openViewer(browser, run);
+    await waitFor(page, () => window.tandem.solution.length > 1, null, 60000);
+    await waitFor(page, () => window.tandem.status.status === 'solved');
+    assert.equal(await page.locator('#path-box').isHidden(), false);
+    await page.click('#play');
+    await sleep(300);
+    const text = await page.evaluate(async () => (await fetch(document.getElementById('save-path').href)).text());
+    const lines = text.trim().split('\n');
+    assert.ok(lines.length >= 2 && lines.every((l) => l.trim().split(/\s+/).length === 7), 'OMPL path format');
+    const file = path.join(path.dirname(session('solve')), 'solve.path');
+    writeFileSync(file, text);
+    execFileSync(tandemBin, ['check-path', 'cluttered-1', file]);
+    const journal = await page.evaluate(async () => (await fetch(document.getElementById('save-session').href)).text());
+    assert.match(journal.split('\n')[0], /"journal":"tandem session"/);
+    await page.screenshot({ path: artefactPath('viewer-solved.png') });
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('a replay drives the viewer to the recorded tree', { timeout: 90000 }, async () => {
+  const file = session('replayed');
+  execFileSync(tandemBin, ['interactive', 'cluttered-1', '--headless', '--time-limit', '3', '--alpha', '0.5',
+    '--session', file], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] }).toString();
+  const end = readFileSync(file, 'utf8').trim().split('\n').map((l) => JSON.parse(l)).filter((r) => r.end).at(-1);
+  const run = await startTandem(['replay', file, '--serve', '--port', '0', '--speed', '0']);
+  try {
+    const page = await openViewer(browser, run);
+    await waitFor(page, () => window.tandem.status.status !== 'replaying');
+    await waitFor(page, (n) => window.tandem.counts().nodes === n, end.nodes);
+    assert.match(run.output, /identical to the session's tree/);
+  } finally {
+    await stopTandem(run);
+  }
+});
