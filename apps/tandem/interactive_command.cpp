@@ -24,6 +24,7 @@ struct InteractiveArgs {
   bool headless = false;
   bool paused = false;
   bool exit_when_done = false;
+  std::optional<double> linger;  ///< seconds to wait for a browser after the planner ends
   std::string session;
   double operator_rate = 1000.0;
   double digest_every = 2.0;
@@ -134,8 +135,28 @@ int run_interactive(InteractiveArgs args) {
   g_session.store(&session);
   std::signal(SIGINT, on_session_signal);
   std::signal(SIGTERM, on_session_signal);
-  const PlannerStatus status = session.run([](const LiveProgress& p) {
-    if (p.paused || p.status != PlannerStatus::running)
+  double ended_at = -1.0;
+  const PlannerStatus status = session.run([&](const LiveProgress& p) {
+    if (p.status != PlannerStatus::running) {
+      // Nobody is watching: end a while after the planner did (--linger).
+      if (ended_at < 0.0) {
+        ended_at = p.elapsed_s;
+        std::cout << "  " << to_string(p.status) << " after " << p.stats.iterations
+                  << " iterations, " << p.stats.nodes << " nodes; the viewer shows it until Ctrl-C"
+                  << (args.linger ? " (or " + std::to_string(static_cast<int>(*args.linger)) +
+                                        " s from now if no browser has connected)"
+                                  : std::string())
+                  << '\n'
+                  << std::flush;
+      }
+      if (args.linger && server && server->connections() == 0) {
+        *args.linger -= 1.0;
+        if (*args.linger < 0.0)
+          session.stop();
+      }
+      return;
+    }
+    if (p.paused)
       return;
     std::cout << "  " << static_cast<int>(p.elapsed_s) << " s: " << p.stats.iterations
               << " iterations (" << static_cast<long>(p.iterations_per_s) << "/s), "
@@ -166,6 +187,10 @@ void add_session_options(CLI::App& app, InteractiveArgs& a) {
   app.add_flag("--paused", a.paused, "Start paused (the viewer resumes or steps)");
   app.add_flag("--exit-when-done", a.exit_when_done,
                "With the viewer: end when the planner ends instead of waiting for Ctrl-C");
+  app.add_option("--linger", a.linger,
+                 "With the viewer: if no browser has connected, end this many seconds after the "
+                 "planner ends (default: wait for Ctrl-C; the demo: 60)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace
@@ -214,6 +239,8 @@ Command add_demo_command(CLI::App& app) {
     args->run.mode = "interactive-contact";
     if (!args->run.alpha)
       args->run.alpha = 0.5;
+    if (!args->linger)
+      args->linger = 60.0;
     return run_interactive(*args);
   };
 }

@@ -263,6 +263,15 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   EXPECT_EQ(replay.digest, live_digest);
 }
 
+TEST(SpaceNav, SaysWhyWhenTheDaemonIsAbsent) {
+  std::string why;
+  const std::unique_ptr<SpaceNav> nav = SpaceNav::open(&why);
+  if (nav != nullptr)
+    GTEST_SKIP() << "spacenavd is running here (" << nav->name() << ")";
+  EXPECT_THAT(why, HasSubstr("spacenavd is not running"));
+  EXPECT_THAT(why, HasSubstr("browser"));
+}
+
 TEST(OperatorSwitch, TakesOverWhereThePartIsAndKeepsItInTheSpace) {
   const Problem problem = detour_problem();
   RunSpec spec = live_spec(1);

@@ -153,13 +153,14 @@ function connect() {
     if (e.data instanceof ArrayBuffer) {
       const batch = decodeNodes(e.data);
       if (!trees.add(batch)) { socket.close(); } // out of order: reconnect, start afresh
+      dirty = true;
       return;
     }
     const m = JSON.parse(e.data);
     if (m.type === 'hello') { hello = m; trees.clear(m.generation); clearSolution(); }
     else if (m.type === 'reset') { trees.clear(m.generation); clearSolution(); }
     else if (m.type === 'status') onStatus(m);
-    else if (m.type === 'operator') op = m;
+    else if (m.type === 'operator') { op = m; dirty = true; }
     else if (m.type === 'solution') onSolution(m.path);
     else if (m.type === 'error') { errors.push(m.message); showMessage(`refused: ${m.message}`, 'bad'); }
   };
@@ -212,6 +213,7 @@ function onStatus(m) {
 }
 
 function clearSolution() {
+  dirty = true;
   solution = [];
   if (pathLine) { scene.remove(pathLine); pathLine.geometry.dispose(); pathLine = null; }
   pathGhost.visible = false;
@@ -243,7 +245,7 @@ function showPathAt(t) {
   pathGhost.visible = true;
 }
 $('play').onclick = () => { playing = !playing; $('play').textContent = playing ? 'pause path' : 'play path'; };
-$('scrub').oninput = (e) => { playing = false; playT = e.target.value / 1000; showPathAt(playT); };
+$('scrub').oninput = (e) => { dirty = true; playing = false; playT = e.target.value / 1000; showPathAt(playT); };
 
 // --- operator inputs -----------------------------------------------------------------------------
 const keyboard = new Keyboard(window);
@@ -269,6 +271,7 @@ gizmo.addEventListener('dragging-changed', (e) => {
 gizmo.addEventListener('objectChange', () => {
   const now = performance.now();
   drivingUntil = now + 300;
+  dirty = true;
   if (now - lastSent > 16) sendPose(now);
 });
 const setGizmo = (mode) => {
@@ -303,6 +306,7 @@ function integrate(dt, now) {
   const angle = w.length() * turn * dt;
   if (angle > 0) part.quaternion.premultiply(new THREE.Quaternion().setFromAxisAngle(w.normalize(), angle));
   drivingUntil = now + 300;
+  dirty = true;
   if (now - lastSent > 16) sendPose(now);
 }
 
@@ -329,16 +333,31 @@ $('alpha').addEventListener('input', (e) => { $('alpha-value').textContent = Num
 for (const c of ['pause', 'resume', 'step', 'reset']) $(c).onclick = () => send({ type: 'command', command: c });
 $('save-path').href = withToken('/api/path');
 $('save-session').href = withToken('/api/session');
-$('colour-by').onchange = (e) => trees.setColourBy(e.target.value);
-$('show-nodes').onchange = (e) => trees.setShowNodes(e.target.value);
+$('colour-by').onchange = (e) => { trees.setColourBy(e.target.value); dirty = true; };
+$('show-nodes').onchange = (e) => { trees.setShowNodes(e.target.value); dirty = true; };
 
 // --- the frame loop ------------------------------------------------------------------------------
+// A frame is drawn only when something changed, at most maxfps times a second (default 30; the
+// URL's ?maxfps=0 lifts the cap): a software renderer then leaves the planner its core.
+const maxfps = Number(new URLSearchParams(location.search).get('maxfps') ?? 30);
+let dirty = true;
+const touch = () => { dirty = true; };
+orbit.addEventListener('change', touch);
+gizmo.addEventListener('change', touch);
+window.addEventListener('resize', touch);
 let fps = 0, frames = 0, fpsFrames = 0, fpsSince = performance.now(), lastFrame = performance.now();
+let lastRender = 0, renderMs = 0;
 function frame(now) {
+  requestAnimationFrame(frame);
   const dt = Math.min((now - lastFrame) / 1000, 0.1);
   lastFrame = now;
   integrate(dt, now);
   if (op && !dragging && now > drivingUntil) setPose(part, op.q);
+  if (now - fpsSince >= 1000) { fps = (1000 * fpsFrames) / (now - fpsSince); fpsFrames = 0; fpsSince = now; }
+  if (!dirty && !dragging && !playing) return;
+  if (maxfps > 0 && now - lastRender < 1000 / maxfps - 2) return;
+  lastRender = now;
+  dirty = false;
   if (op && op.contact && op.plane) {
     const n = new THREE.Vector3(...op.plane.normal).normalize();
     const p = new THREE.Vector3(...op.plane.point);
@@ -369,10 +388,11 @@ function frame(now) {
     $('scrub').value = String(Math.round(playT * 1000));
     showPathAt(playT);
   }
+  const t0 = performance.now();
   renderer.render(scene, camera);
+  renderer.getContext().finish?.();
+  renderMs = 0.9 * renderMs + 0.1 * (performance.now() - t0);
   ++frames; ++fpsFrames;
-  if (now - fpsSince >= 1000) { fps = (1000 * fpsFrames) / (now - fpsSince); fpsFrames = 0; fpsSince = now; }
-  requestAnimationFrame(frame);
 }
 
 // --- for the tests and for scripts: read-only views of what the page shows ------------------------
@@ -382,6 +402,8 @@ window.tandem = {
   get status() { return status; },
   get operator() { return op; },
   get fps() { return fps; },
+  /** Milliseconds a frame takes to draw (moving average). */
+  get renderMs() { return renderMs; },
   get frames() { return frames; },
   get solution() { return solution; },
   get errors() { return errors.slice(); },

@@ -66,13 +66,13 @@ export async function launchBrowser() {
   });
 }
 
-export async function openViewer(browser, run, viewport = { width: 1280, height: 800 }) {
+export async function openViewer(browser, run, { viewport = { width: 1280, height: 800 }, query = '' } = {}) {
   const page = await browser.newPage({ viewport });
   openPages.add(page);
   const logs = [];
   page.on('console', (m) => logs.push(m.text()));
   page.on('pageerror', (e) => logs.push(`page error: ${e.message}`));
-  await page.goto(run.url);
+  await page.goto(run.url + query);
   await page.waitForFunction(() => window.tandem?.connected && window.tandem.status, null, { timeout: 20000 });
   page.logs = logs;
   return page;

@@ -134,6 +134,58 @@ test('dragging the part adds operator nodes where it is dragged', { timeout: 900
   }
 });
 
+test('the keyboard, a gamepad and a WebHID SpaceMouse move the part', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('devices', ['cluttered-1', '--mode', 'interactive', '--alpha', '0', '--operator', 'browser']));
+  try {
+    const page = await openViewer(browser, run);
+    // Stand-ins for the devices (the browser has none here): the Gamepad API and WebHID as a
+    // device would drive them.
+    await page.evaluate(() => {
+      window.__pad = { axes: [0, 0, 0, 0], buttons: [] };
+      navigator.getGamepads = () => [window.__pad];
+      const listeners = [];
+      window.__hid = {
+        productName: 'SpaceMouse Compact (stand-in)', opened: true,
+        addEventListener: (type, f) => listeners.push(f), open: async () => {},
+        send(reportId, values) {
+          const data = new DataView(new ArrayBuffer(2 * values.length));
+          values.forEach((v, k) => data.setInt16(2 * k, v, true));
+          for (const f of listeners) f({ reportId, data });
+        },
+      };
+      Object.defineProperty(navigator, 'hid', { value: { requestDevice: async () => [window.__hid] } });
+    });
+    const z = () => page.evaluate(() => window.tandem.operator.q[2]);
+    const x = () => page.evaluate(() => window.tandem.operator.q[0]);
+    await waitFor(page, () => window.tandem.operator);
+    const z0 = await z();
+    await page.locator('#view canvas').focus().catch(() => {});
+    await page.keyboard.down('KeyE');
+    await sleep(400);
+    await page.keyboard.up('KeyE');
+    await waitFor(page, (z1) => window.tandem.operator.q[2] > z1 + 0.1, z0);
+    const x0 = await x();
+    await page.evaluate(() => { window.__pad.axes = [0.8, 0, 0, 0]; });
+    await sleep(400);
+    await page.evaluate(() => { window.__pad.axes = [0, 0, 0, 0]; });
+    await waitFor(page, (x1) => window.tandem.operator.q[0] > x1 + 0.1, x0);
+    const x2 = await x();
+    await page.click('#webhid');
+    await waitFor(page, () => /SpaceMouse Compact/.test(document.getElementById('message').textContent));
+    await page.evaluate(() => window.__hid.send(1, [-300, 0, 0, 0, 0, 0]));
+    await sleep(400);
+    await page.evaluate(() => window.__hid.send(1, [0, 0, 0, 0, 0, 0]));
+    await waitFor(page, (x3) => window.tandem.operator.q[0] < x3 - 0.1, x2);
+    // And a node grows where the part went.
+    await waitFor(page, () => {
+      const q = window.tandem.operator.q;
+      return window.tandem.operatorNodes().some((p) => Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) < 0.05);
+    });
+  } finally {
+    await stopTandem(run);
+  }
+});
+
 async function operatorShare(page, ms) {
   const a = await counts(page);
   await sleep(ms);

@@ -183,7 +183,7 @@ class ViewerServer::Impl {
   net::steady_timer tick_;
   unsigned short port_ = 0;
   std::set<std::shared_ptr<WsSession>> sockets_;  ///< server thread only
-  std::atomic<std::size_t> clients_{0};
+  std::atomic<std::size_t> clients_{0}, connections_{0};
   std::thread thread_;
 };
 
@@ -203,6 +203,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
         return;
       self->server_.sockets_.insert(self);
       self->server_.clients_.store(self->server_.sockets_.size());
+      self->server_.connections_.fetch_add(1);
       self->read();
       self->pump();
     });
@@ -506,6 +507,10 @@ unsigned short ViewerServer::port() const {
 
 std::size_t ViewerServer::clients() const {
   return impl_->clients_.load();
+}
+
+std::size_t ViewerServer::connections() const {
+  return impl_->connections_.load();
 }
 
 }  // namespace tandem

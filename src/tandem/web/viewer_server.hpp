@@ -62,8 +62,9 @@ class ViewerServer {
   /// http://127.0.0.1:PORT/?token=…
   std::string url() const;
   unsigned short port() const;
-  /// Browsers connected now.
+  /// Browsers connected now, and since the start.
   std::size_t clients() const;
+  std::size_t connections() const;
 
   class Impl;
 

@@ -1,0 +1,120 @@
+// The viewer's benchmark (not a test): on this machine, with Debian's headless Chromium,
+//   1. planner iterations in a fixed planning time with the viewer attached vs headless (the
+//      same seeded BiRRT, α = 1, on environment 2: the same tree, so the count is the throughput);
+//   2. the time from a browser input event (a drag of the part) to its node in the tree: as the
+//      session measures it (event received → operator node grown) and as the page sees it (event
+//      sent → the status announcing that node received);
+//   3. the viewer's frame rate with more than 100 000 edges, while the planner runs and paused.
+// Usage: node bench/viewer-bench.mjs [--runs N] [--seconds S] [--out FILE.json]
+import { spawnSync } from 'node:child_process';
+import { writeFileSync, mkdirSync } from 'node:fs';
+import path from 'node:path';
+import {
+  startTandem, stopTandem, launchBrowser, openViewer, scratch, sleep, tandemBin, root,
+} from '../test/harness.mjs';
+
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+};
+const runs = Number(arg('--runs', 3));
+const seconds = Number(arg('--seconds', 20));
+const out = arg('--out', path.join(root, 'bench-results', 'viewer', 'viewer.json'));
+const dir = scratch();
+const median = (xs) => { const s = [...xs].sort((a, b) => a - b); const m = s.length >> 1; return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2; };
+const quantile = (xs, q) => { const s = [...xs].sort((a, b) => a - b); return s[Math.min(s.length - 1, Math.floor(q * s.length))]; };
+const iterationsOf = (text) => Number(text.match(/(?:timeout|solved|interrupted) after (\d+) iterations/)?.[1]);
+
+const browser = await launchBrowser();
+const result = { machine: `${process.platform} ${(await import('node:os')).cpus().length} cores`, seconds, runs };
+
+// 1. Throughput.
+const common = ['cluttered-2', '--mode', 'interactive', '--alpha', '1', '--operator', 'browser', '--seed', '1',
+  '--time-limit', String(seconds)];
+const headless = [], viewer = [];
+for (let r = 0; r < runs; ++r) {
+  // Exit 1: not solved within the time limit (as expected here).
+  const h = spawnSync(tandemBin, ['interactive', ...common, '--headless', '--session', path.join(dir, `h${r}.jsonl`)],
+    { encoding: 'utf8' });
+  headless.push(iterationsOf(h.stdout));
+  const run = await startTandem(['interactive', ...common, '--port', '0', '--exit-when-done', '--session', path.join(dir, `v${r}.jsonl`)]);
+  const page = await openViewer(browser, run);
+  await run.exit;
+  const shown = await page.evaluate(() => window.tandem.counts().edges);
+  await page.close();
+  viewer.push(iterationsOf(run.output));
+  console.error(`throughput run ${r + 1}: headless ${headless.at(-1)}, with the viewer ${viewer.at(-1)} iterations (viewer showed ${shown} edges)`);
+}
+result.throughput = { headless, viewer, ratio: median(viewer) / median(headless) };
+
+// 2. Input to node.
+{
+  const run = await startTandem(['interactive', 'cluttered-1', '--mode', 'interactive', '--alpha', '0', '--operator', 'browser',
+    '--port', '0', '--session', path.join(dir, 'latency.jsonl')]);
+  const page = await openViewer(browser, run);
+  await page.waitForFunction(() => window.tandem.operator);
+  for (let k = 0; k < 24; ++k) {
+    const from = await page.evaluate(() => window.tandem.partScreen());
+    const dy = k % 2 ? 30 : -30;
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let s = 1; s <= 3; ++s) await page.mouse.move(from.x, from.y + (dy * s) / 3);
+    await page.mouse.up();
+    await sleep(400);
+  }
+  const lat = await page.evaluate(() => window.tandem.latencies);
+  await stopTandem(run);
+  const server = lat.map((l) => l.server_ms), trip = lat.map((l) => l.round_trip_ms);
+  result.latency = { samples: lat.length, server_median_ms: median(server), server_p90_ms: quantile(server, 0.9),
+    round_trip_median_ms: median(trip), round_trip_p90_ms: quantile(trip, 0.9) };
+  console.error(`latency: ${JSON.stringify(result.latency)}`);
+}
+
+// 3. Frame rate with > 100k edges.
+{
+  const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
+  const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];
+  for (let k = 0; k <= 30000; ++k) {
+    const t = k / 50;
+    lines.push(`${t} ${-0.9 + 0.1 * Math.sin(t)} 0.25 ${1.2 + 0.03 * Math.cos(3 * t) - 0.03} 0 0 ${s} ${c} 0`);
+  }
+  const trace = path.join(dir, 'swing.trace');
+  writeFileSync(trace, `${lines.join('\n')}\n`);
+  const run = await startTandem(['interactive', 'cluttered-2', '--mode', 'interactive', '--alpha', '0.1', '--operator',
+    `trace:${trace}`, '--port', '0', '--session', path.join(dir, 'fps.jsonl')]);
+  // Uncapped (the viewer draws at most 30 frames a second by default): what the renderer can do.
+  const page = await openViewer(browser, run, { query: '&maxfps=0' });
+  await page.waitForFunction(() => window.tandem.counts().edges > 100000, null, { timeout: 120000, polling: 500 });
+  const fps = async () => {
+    const f0 = await page.evaluate(() => window.tandem.frames);
+    const t0 = Date.now();
+    await sleep(5000);
+    return (1000 * ((await page.evaluate(() => window.tandem.frames)) - f0)) / (Date.now() - t0);
+  };
+  const planning = await fps();
+  const renderMsPlanning = await page.evaluate(() => window.tandem.renderMs);
+  const edgesPlanning = (await page.evaluate(() => window.tandem.counts())).edges;
+  await page.click('#pause');
+  await page.waitForFunction(() => window.tandem.status.paused);
+  const paused = await fps();
+  const renderMsPaused = await page.evaluate(() => window.tandem.renderMs);
+  const edgesPaused = (await page.evaluate(() => window.tandem.counts())).edges;
+  await stopTandem(run);
+  result.frame_rate = { planning_fps: planning, planning_edges: edgesPlanning, planning_render_ms: renderMsPlanning,
+    paused_fps: paused, paused_edges: edgesPaused, paused_render_ms: renderMsPaused };
+  console.error(`frame rate: ${JSON.stringify(result.frame_rate)}`);
+}
+await browser.close();
+
+mkdirSync(path.dirname(out), { recursive: true });
+writeFileSync(out, `${JSON.stringify(result, null, 2)}\n`);
+const f = (x, d = 0) => x.toLocaleString('en', { maximumFractionDigits: d, minimumFractionDigits: d });
+console.log(`| measure | value |
+| --- | ---: |
+| planner iterations in ${seconds} s, headless (median of ${runs}) | ${f(median(headless))} |
+| the same with the viewer attached | ${f(median(viewer))} |
+| with the viewer / headless | ${f(100 * result.throughput.ratio, 1)}% |
+| input event → its node, in the session (median, p90 of ${result.latency.samples}) | ${f(result.latency.server_median_ms, 1)} ms, ${f(result.latency.server_p90_ms, 1)} ms |
+| input event sent → the page has its node (median, p90) | ${f(result.latency.round_trip_median_ms, 1)} ms, ${f(result.latency.round_trip_p90_ms, 1)} ms |
+| frame rate, ${f(result.frame_rate.planning_edges)} edges, planner running (uncapped) | ${f(result.frame_rate.planning_fps, 1)} fps (${f(result.frame_rate.planning_render_ms, 1)} ms to draw a frame) |
+| frame rate, ${f(result.frame_rate.paused_edges)} edges, planner paused (uncapped) | ${f(result.frame_rate.paused_fps, 1)} fps (${f(result.frame_rate.paused_render_ms, 1)} ms to draw a frame) |`);
