@@ -188,5 +188,26 @@ TEST(Extend, StopsAtTheRangeAndReportsWhatItDid) {
   EXPECT_GT(t2.nodes[stopped.node].t.x(), -0.6);
 }
 
+TEST(Extend, AddsNothingTowardANodeOfTheTree) {
+  // An operator who holds the part still is the same target iteration after iteration: once the
+  // tree has reached it, it must not fill up with copies of it.
+  Fixture f;
+  for (const ExtendMode mode : {ExtendMode::classic, ExtendMode::last_valid}) {
+    Tree tree(f.problem.space, "kdtree", f.problem.start);
+    Config target = f.problem.start;
+    target.t.y() += 0.3;
+    const Extension first = extend(tree, target, 0.5, f.validator, mode, NodeSource::operator_);
+    ASSERT_EQ(first.status, ExtendStatus::reached);
+    EXPECT_TRUE(first.added);
+    for (int k = 0; k < 5; ++k) {
+      const Extension again = extend(tree, target, 0.5, f.validator, mode, NodeSource::operator_);
+      EXPECT_EQ(again.status, ExtendStatus::reached);
+      EXPECT_FALSE(again.added);
+      EXPECT_EQ(again.node, first.node);
+    }
+    EXPECT_EQ(tree.size(), 2u);
+  }
+}
+
 }  // namespace
 }  // namespace tandem

@@ -254,6 +254,14 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   const Journal journal = read_journal(options.journal);
   ASSERT_EQ(journal.resets.size(), 1u);
   EXPECT_GE(journal.resets[0], paused_at + 2);
+  std::string events;
+  for (const Journal::Event& e : journal.events)
+    events += e.what + ";";
+  EXPECT_THAT(events, HasSubstr("input simulated;"));
+  EXPECT_THAT(events, HasSubstr("pause;"));
+  EXPECT_THAT(events, HasSubstr("step "));  // the two steps, in one record or two
+  EXPECT_THAT(events, HasSubstr("input browser;"));
+  EXPECT_THAT(events, HasSubstr("resume;"));
   EXPECT_EQ(journal.digests.back().digest, live_digest);
   EXPECT_EQ(journal.digests.back().end_status, std::string(to_string(status)));
   std::size_t restarts = 0;

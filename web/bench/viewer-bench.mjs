@@ -10,7 +10,7 @@ import { spawnSync } from 'node:child_process';
 import { writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import {
-  startTandem, stopTandem, launchBrowser, openViewer, scratch, sleep, tandemBin, root,
+  startTandem, stopTandem, launchBrowser, openViewer, scratch, sleep, tandemBin, root, writeSwingTrace,
 } from '../test/harness.mjs';
 
 const arg = (name, fallback) => {
@@ -72,14 +72,7 @@ result.throughput = { headless, viewer, ratio: median(viewer) / median(headless)
 
 // 3. Frame rate with > 100k edges.
 {
-  const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
-  const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];
-  for (let k = 0; k <= 30000; ++k) {
-    const t = k / 50;
-    lines.push(`${t} ${-0.9 + 0.1 * Math.sin(t)} 0.25 ${1.2 + 0.03 * Math.cos(3 * t) - 0.03} 0 0 ${s} ${c} 0`);
-  }
-  const trace = path.join(dir, 'swing.trace');
-  writeFileSync(trace, `${lines.join('\n')}\n`);
+  const trace = writeSwingTrace(dir, 600);
   const run = await startTandem(['interactive', 'cluttered-2', '--mode', 'interactive', '--alpha', '0.1', '--operator',
     `trace:${trace}`, '--port', '0', '--session', path.join(dir, 'fps.jsonl')]);
   // Uncapped (the viewer draws at most 30 frames a second by default): what the renderer can do.

@@ -1,7 +1,7 @@
 // Starts tandem with its viewer and a headless Debian Chromium (playwright-core) for the tests and
 // the benchmark. The tandem binary: $TANDEM_BIN, else ../build/apps/tandem/tandem.
 import { spawn } from 'node:child_process';
-import { mkdtempSync, existsSync, mkdirSync } from 'node:fs';
+import { mkdtempSync, existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -84,3 +84,19 @@ export function artefactPath(name) {
 }
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+/**
+ * A recorded operator (seconds) that swings the part to and fro near environment 2's start, in free
+ * space: each new pose is a target the tree can reach (for measuring the share of operator nodes).
+ */
+export function writeSwingTrace(dir, seconds = 120) {
+  const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
+  const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];
+  for (let k = 0; k <= 50 * seconds; ++k) {
+    const t = k / 50;
+    lines.push(`${t} ${-0.9 + 0.1 * Math.sin(t)} 0.25 ${1.2 + 0.03 * Math.cos(3 * t) - 0.03} 0 0 ${s} ${c} 0`);
+  }
+  const file = path.join(dir, 'swing.trace');
+  writeFileSync(file, `${lines.join('\n')}\n`);
+  return file;
+}

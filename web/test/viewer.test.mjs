@@ -11,6 +11,7 @@ import http from 'node:http';
 import path from 'node:path';
 import {
   startTandem, stopTandem, launchBrowser, openViewer, artefactPath, scratch, sleep, tandemBin,
+  writeSwingTrace,
 } from './harness.mjs';
 
 let browser;
@@ -200,22 +201,9 @@ async function setAlpha(page, value) {
   await waitFor(page, (v) => Math.abs(window.tandem.status.settings.alpha - v) < 1e-9, value);
 }
 
-/** A recorded operator (seconds) that swings the part to and fro near environment 2's start. */
-function swingTrace() {
-  const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
-  const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];
-  for (let k = 0; k <= 6000; ++k) {
-    const t = k / 50;
-    lines.push(`${t} ${-0.9 + 0.1 * Math.sin(t)} 0.25 ${1.2 + 0.03 * Math.cos(3 * t) - 0.03} 0 0 ${s} ${c} 0`);
-  }
-  const file = path.join(dir, 'swing.trace');
-  writeFileSync(file, `${lines.join('\n')}\n`);
-  return file;
-}
-
 test('changing α in the viewer changes the share of operator nodes', { timeout: 90000 }, async () => {
   const run = await startTandem(live('alpha', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5',
-    '--operator', `trace:${swingTrace()}`]));
+    '--operator', `trace:${writeSwingTrace(dir)}`]));
   try {
     const page = await openViewer(browser, run);
     await setAlpha(page, 0.9);

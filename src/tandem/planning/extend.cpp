@@ -9,6 +9,13 @@ Extension extend(Tree& tree, const Config& q_target, double range, MotionValidat
   e.near = tree.nearest(q_target);
   const Config& q_near = tree.nodes[e.near];
   const double d = space.distance(q_near, q_target);
+  if (d == 0.0) {
+    // The target is a node already (an operator holding the part still is the same target
+    // iteration after iteration): reached, and nothing to add.
+    e.status = ExtendStatus::reached;
+    e.node = e.near;
+    return e;
+  }
   const bool within = d <= range;
   const Config q_new = within ? q_target : space.interpolate(q_near, q_target, range / d);
 
@@ -16,15 +23,18 @@ Extension extend(Tree& tree, const Config& q_target, double range, MotionValidat
     if (!validator.check_motion(q_near, q_new))
       return e;
     e.node = tree.add(q_new, e.near, source);
+    e.added = true;
     e.status = within ? ExtendStatus::reached : ExtendStatus::advanced;
     return e;
   }
   MotionCheck check = validator.check_motion_last_valid(q_near, q_new);
   if (check.valid) {
     e.node = tree.add(q_new, e.near, source);
+    e.added = true;
     e.status = within ? ExtendStatus::reached : ExtendStatus::advanced;
   } else if (check.last_valid_step > 0) {
     e.node = tree.add(check.last_valid, e.near, source);
+    e.added = true;
     e.status = ExtendStatus::stopped;
   }
   return e;

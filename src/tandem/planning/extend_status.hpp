@@ -9,7 +9,8 @@ namespace tandem {
 enum class ExtendStatus : std::uint8_t {
   trapped,   ///< nothing added (the I-RRT's "Collision")
   advanced,  ///< a node was added one full range toward the target
-  reached,   ///< a node equal to the target was added (the I-RRT's "Reached")
+  reached,   ///< the tree has a node equal to the target: added now, or there already (the
+             ///< I-RRT's "Reached")
   stopped,   ///< last_valid mode: a node was added short of the target, at an obstacle ("Obstacle")
 };
 

@@ -108,7 +108,7 @@ bool IRRT::iterate() {
   }
   const Extension e = extend(tree_, q_rand, range_, validator_, settings_.extend, source);
   count_extension(e.status);
-  if (e.status != ExtendStatus::trapped) {
+  if (e.added) {
     labels_.push_back({space_.distance(tree_.nodes[e.node], goal_)});
   }
   NodeLabel& near = labels_[e.near];  // after the push_back, which may move the labels

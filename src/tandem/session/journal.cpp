@@ -175,6 +175,10 @@ void JournalWriter::reset(std::uint64_t steps) {
   write_line(json{{"reset", steps}}.dump());
 }
 
+void JournalWriter::event(std::uint64_t steps, const std::string& what) {
+  write_line(json{{"event", what}, {"steps", steps}}.dump());
+}
+
 Journal read_journal(const std::filesystem::path& file) {
   const std::string text = read_text_file(file);
   Journal journal;
@@ -243,6 +247,9 @@ Journal read_journal(const std::filesystem::path& file) {
         if (!journal.params.empty() && p.steps < journal.params.back().steps)
           throw InputError(file.string(), where + ": parameters before the previous ones");
         journal.params.push_back(p);
+      } else if (j.contains("event")) {
+        journal.events.push_back(
+            {j.at("steps").get<std::uint64_t>(), j.at("event").get<std::string>()});
       } else if (j.contains("reset")) {
         const auto steps = j.at("reset").get<std::uint64_t>();
         if (!journal.resets.empty() && steps < journal.resets.back())

@@ -8,6 +8,7 @@
 //   {"op":123,"seq":57,"t":0.0571,"pace":0.0571,"q":[x,y,z,qx,qy,qz,qw],"v":[6 numbers],"b":0}
 //   {"params":4000,"settings":{…}}
 //   {"digest":"…","steps":50000,"iterations":49999,"nodes":1234}
+//   {"event":"pause","steps":52000}
 //   {"reset":52000}
 //   {"op":3,"seq":1234,…}
 //   {"end":"solved","steps":61234,"iterations":61233,"nodes":2345,"digest":"…"}
@@ -16,7 +17,9 @@
 // LiveFeed records; the nearest obstacle and contact frame are recomputed from q_device on replay,
 // which FCL does identically); "params" the planner step after which new interaction settings
 // applied; "digest" records, written every few seconds, let a replay check itself even when the
-// session was killed before its "end". "reset" records the step after which the user started the
+// session was killed before its "end". "event" records what the user did that the replay needs
+// no more than the records above (pause, resume, step, the input that holds the part: simulated,
+// browser, spacemouse), for the record. "reset" records the step after which the user started the
 // planner over (new trees, same seed): the "op" records after it count the new planner's
 // iterations. Numbers are written so that they read back bit for bit.
 //
@@ -78,7 +81,12 @@ struct Journal {
   std::vector<JournalParams> params;
   std::vector<JournalDigest> digests;  ///< in order; the "end" record last, if the session ended
   std::vector<std::uint64_t> resets;   ///< steps after which the planner was started over
-  bool torn = false;                   ///< the last line was cut short (the process was killed)
+  struct Event {
+    std::uint64_t steps = 0;
+    std::string what;
+  };
+  std::vector<Event> events;  ///< the user's actions, for the record
+  bool torn = false;          ///< the last line was cut short (the process was killed)
 };
 
 class JournalWriter {
@@ -93,6 +101,7 @@ class JournalWriter {
   void params(std::uint64_t steps, const InteractionSettings& settings);
   void digest(const JournalDigest& d);
   void reset(std::uint64_t steps);
+  void event(std::uint64_t steps, const std::string& what);
   const std::filesystem::path& file() const { return file_; }
 
  private:

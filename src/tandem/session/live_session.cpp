@@ -65,7 +65,9 @@ LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const Live
   parameters_.set(spec_.settings.interaction);
   settings_now_ = spec_.settings.interaction;
   paused_ = options.start_paused;
+  input_ = switch_->snapshot().input;
   journal_.emplace(options.journal, header_for(problem, spec_, options, *switch_));
+  journal_->event(0, "input " + std::string(to_string(input_)));
   interaction_.feed = &feed_;
   interaction_.parameters = &parameters_;
   interaction_.guidance = &guidance_channel_;
@@ -146,8 +148,12 @@ void LiveSession::apply_commands() {
     parameters_.set(*p.settings);
     journal_->params(steps_, *p.settings);
   }
-  if (p.paused)
+  if (p.paused && *p.paused != paused_) {
     paused_ = *p.paused;
+    journal_->event(steps_, paused_ ? "pause" : "resume");
+  }
+  if (p.steps > 0)
+    journal_->event(steps_, "step " + std::to_string(p.steps));
   steps_requested_ += p.steps;
 }
 
@@ -273,6 +279,11 @@ PlannerStatus LiveSession::run(const std::function<void(const LiveProgress&)>& p
       {
         const std::lock_guard lock(pending_mutex_);
         progress_ = p;
+      }
+      const OperatorInput input = switch_->snapshot().input;
+      if (input != input_) {
+        journal_->event(steps_, "input " + std::string(to_string(input)));
+        input_ = input;
       }
       if (observer_ != nullptr)
         observer_->observe(*this, *planner_);

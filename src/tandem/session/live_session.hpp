@@ -153,6 +153,7 @@ class LiveSession {
   bool have_state_ = false;
   Guidance last_guidance_;
   bool have_guidance_ = false;
+  OperatorInput input_ = OperatorInput::simulated;  ///< as last journaled
   std::uint64_t latency_id_ = 0;
   double latency_s_ = 0.0;
 

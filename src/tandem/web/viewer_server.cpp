@@ -27,6 +27,8 @@ using tcp = net::ip::tcp;
 namespace {
 
 constexpr std::chrono::milliseconds kTick{15};
+/// Browsers at once (each costs the server a copy of the trees' new nodes per frame).
+constexpr std::size_t kMaxSockets = 32;
 
 std::string_view sv(beast::string_view s) {
   return {s.data(), s.size()};
@@ -84,6 +86,18 @@ std::optional<std::string> read_file(const std::filesystem::path& file) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+/// A short plain-text answer that closes the connection (refusals).
+http::response<http::string_body> plain_reply(http::status status, unsigned version,
+                                              std::string text) {
+  http::response<http::string_body> res{status, version};
+  res.set(http::field::server, "tandem");
+  res.set(http::field::content_type, "text/plain; charset=utf-8");
+  res.body() = std::move(text);
+  res.keep_alive(false);
+  res.prepare_payload();
+  return res;
 }
 
 void log_line(const std::string& text) {
@@ -197,7 +211,9 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     ws_.set_option(websocket::stream_base::decorator(
         [](websocket::response_type& res) { res.set(http::field::server, "tandem"); }));
     ws_.read_message_max(kMaxMessageBytes);
-    peer_ = beast::get_lowest_layer(ws_).socket().remote_endpoint().address().to_string();
+    beast::error_code no_peer;
+    const auto endpoint = beast::get_lowest_layer(ws_).socket().remote_endpoint(no_peer);
+    peer_ = no_peer ? std::string("?") : endpoint.address().to_string();
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
       if (ec)
         return;
@@ -330,12 +346,14 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     const bool upgrade = websocket::is_upgrade(req);
     if (auto why = server_.refusal(req, upgrade)) {
       log_line("refused " + target.substr(0, target.find('?')) + " from " + peer() + ": " + *why);
-      http::response<http::string_body> res{http::status::forbidden, req.version()};
-      res.set(http::field::content_type, "text/plain; charset=utf-8");
-      res.body() = "403 forbidden: " + *why + "\n";
-      res.keep_alive(false);
-      res.prepare_payload();
-      write(std::move(res));
+      write(plain_reply(http::status::forbidden, req.version(), "403 forbidden: " + *why + "\n"));
+      return;
+    }
+    if (upgrade && server_.sockets_.size() >= kMaxSockets) {
+      log_line("refused a WebSocket from " + peer() + ": " + std::to_string(kMaxSockets) +
+               " are open");
+      write(
+          plain_reply(http::status::service_unavailable, req.version(), "503 too many viewers\n"));
       return;
     }
     if (upgrade) {
@@ -347,12 +365,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
 
   void reply_bad_request(const std::string& why) {
     log_line("refused a malformed request from " + peer() + ": " + why);
-    http::response<http::string_body> res{http::status::bad_request, 11};
-    res.set(http::field::content_type, "text/plain; charset=utf-8");
-    res.body() = "400 bad request: " + why + "\n";
-    res.keep_alive(false);
-    res.prepare_payload();
-    write(std::move(res));
+    write(plain_reply(http::status::bad_request, 11, "400 bad request: " + why + "\n"));
   }
 
   void write(http::response<http::string_body>&& res) {
