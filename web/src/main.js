@@ -340,18 +340,20 @@ $('show-nodes').onchange = (e) => { trees.setShowNodes(e.target.value); dirty = 
 // A frame is drawn only when something changed, at most maxfps times a second (default 30; the
 // URL's ?maxfps=0 lifts the cap): a software renderer then leaves the planner its core.
 const maxfps = Number(new URLSearchParams(location.search).get('maxfps') ?? 30);
+orbit.autoRotateSpeed = 4;
 let dirty = true;
 const touch = () => { dirty = true; };
 orbit.addEventListener('change', touch);
 gizmo.addEventListener('change', touch);
 window.addEventListener('resize', touch);
 let fps = 0, frames = 0, fpsFrames = 0, fpsSince = performance.now(), lastFrame = performance.now();
-let lastRender = 0, renderMs = 0;
+let lastRender = 0;
 function frame(now) {
   requestAnimationFrame(frame);
   const dt = Math.min((now - lastFrame) / 1000, 0.1);
   lastFrame = now;
   integrate(dt, now);
+  if (orbit.autoRotate) orbit.update(dt);
   if (op && !dragging && now > drivingUntil) setPose(part, op.q);
   if (now - fpsSince >= 1000) { fps = (1000 * fpsFrames) / (now - fpsSince); fpsFrames = 0; fpsSince = now; }
   if (!dirty && !dragging && !playing) return;
@@ -388,10 +390,7 @@ function frame(now) {
     $('scrub').value = String(Math.round(playT * 1000));
     showPathAt(playT);
   }
-  const t0 = performance.now();
   renderer.render(scene, camera);
-  renderer.getContext().finish?.();
-  renderMs = 0.9 * renderMs + 0.1 * (performance.now() - t0);
   ++frames; ++fpsFrames;
 }
 
@@ -402,8 +401,8 @@ window.tandem = {
   get status() { return status; },
   get operator() { return op; },
   get fps() { return fps; },
-  /** Milliseconds a frame takes to draw (moving average). */
-  get renderMs() { return renderMs; },
+  /** Turns the camera about the scene without end (a frame to draw every time: for measuring). */
+  spin(on) { orbit.autoRotate = on; },
   get frames() { return frames; },
   get solution() { return solution; },
   get errors() { return errors.slice(); },

@@ -397,6 +397,9 @@ void ViewerServer::Impl::accept() {
   acceptor_.async_accept(net::make_strand(ioc_), [this](beast::error_code ec, tcp::socket socket) {
     if (ec)
       return;  // closed
+    // Small messages (a pose, a status) go out at once, not after Nagle's wait.
+    beast::error_code ignored;
+    socket.set_option(tcp::no_delay(true), ignored);
     std::make_shared<HttpSession>(*this, std::move(socket))->read();
     accept();
   });
