@@ -118,8 +118,7 @@ int run_interactive(InteractiveArgs args) {
             << spec.settings.seed << "; session journal " << args.session << '\n';
   const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
   if (!input.spacemouse_available)
-    std::cout << "  " << input.spacemouse_status
-              << ": no SpaceMouse (start spacenavd for one; the browser's inputs work)\n";
+    std::cout << "  " << input.spacemouse_status << '\n';
   std::optional<ViewerState> state;
   std::optional<LiveControl> control;
   std::optional<ViewerServer> server;
@@ -135,12 +134,12 @@ int run_interactive(InteractiveArgs args) {
   g_session.store(&session);
   std::signal(SIGINT, on_session_signal);
   std::signal(SIGTERM, on_session_signal);
-  double ended_at = -1.0;
+  bool announced_end = false;
   const PlannerStatus status = session.run([&](const LiveProgress& p) {
     if (p.status != PlannerStatus::running) {
       // Nobody is watching: end a while after the planner did (--linger).
-      if (ended_at < 0.0) {
-        ended_at = p.elapsed_s;
+      if (!announced_end) {
+        announced_end = true;
         std::cout << "  " << to_string(p.status) << " after " << p.stats.iterations
                   << " iterations, " << p.stats.nodes << " nodes; the viewer shows it until Ctrl-C"
                   << (args.linger ? " (or " + std::to_string(static_cast<int>(*args.linger)) +

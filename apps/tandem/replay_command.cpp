@@ -4,7 +4,6 @@
 #include <chrono>
 #include <csignal>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "cli_support.hpp"
@@ -47,27 +46,6 @@ extern "C" void on_replay_signal(int) {
   g_stop.store(true);
 }
 
-std::string replay_status_json(const Planner& planner, const Journal& journal, double t,
-                               bool done) {
-  const PlannerStats& s = planner.stats();
-  return nlohmann::json{
-      {"type", "status"},
-      {"status", done ? std::string(to_string(planner.status())) : std::string("replaying")},
-      {"paused", false},
-      {"mode", journal.header.mode},
-      {"planner", std::string(planner.name())},
-      {"seed", journal.header.settings.seed},
-      {"elapsed_s", t},
-      {"iterations", s.iterations},
-      {"nodes", s.nodes},
-      {"edges", s.edges},
-      {"collision_checks", s.collision_checks},
-      {"nodes_by_source", s.nodes_by_source},
-      {"input", "replay"},
-      {"replay", true}}
-      .dump();
-}
-
 int run_replay(const ReplayArgs& args) {
   if (args.serve)
     require_front_end(server_options(args.viewer).web_root);
@@ -105,7 +83,7 @@ int run_replay(const ReplayArgs& args) {
       }
       const double t = watch.seconds();
       if (t >= next_update || last) {
-        state->update(planner, replay_status_json(planner, journal, t, last),
+        state->update(planner, replay_status_json(planner, journal.header.mode, t, last),
                       operator_json(op, planner.settings().interaction, problem.space, nullptr));
         next_update = t + 1.0 / 30.0;
       }

@@ -202,11 +202,11 @@ export class Trees {
     }
     return { nodes, edges, bySource };
   }
-  /** The positions of the operator nodes of the tree rooted at the start, newest last. */
-  operatorNodes(since = 0) {
+  /** The positions of the operator nodes of every tree, in order. */
+  operatorNodes() {
     const out = [];
     for (const v of this.views) {
-      for (let i = since; i < v.count; ++i) {
+      for (let i = 0; i < v.count; ++i) {
         if (v.sources[i] === 2) out.push([v.nodePositions[3 * i], v.nodePositions[3 * i + 1],
           v.nodePositions[3 * i + 2]]);
       }

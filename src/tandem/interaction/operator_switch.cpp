@@ -41,10 +41,11 @@ std::optional<OperatorInput> parse_operator_input(std::string_view name) {
 
 OperatorSwitch::OperatorSwitch(const SE3Space& space,
                                std::shared_ptr<const OperatorSource> simulated, const Config& start,
-                               std::unique_ptr<SpaceNav> spacenav)
+                               std::unique_ptr<SpaceNav> spacenav, std::string no_spacenav)
     : space_(space),
       simulated_(std::move(simulated)),
       spacenav_(std::move(spacenav)),
+      no_spacenav_(std::move(no_spacenav)),
       input_(simulated_ != nullptr ? OperatorInput::simulated : OperatorInput::browser),
       held_(start),
       // Full deflection crosses a tenth of the scene in a second, or turns a quarter turn.
@@ -154,7 +155,7 @@ OperatorSwitch::Snapshot OperatorSwitch::snapshot() const {
   s.input = input_;
   s.simulated_available = simulated_ != nullptr;
   s.spacemouse_available = spacenav_ != nullptr;
-  s.spacemouse_status = spacenav_ != nullptr ? spacenav_->name() : "spacenavd not running";
+  s.spacemouse_status = spacenav_ != nullptr ? spacenav_->name() : no_spacenav_;
   return s;
 }
 

@@ -35,9 +35,10 @@ std::optional<OperatorInput> parse_operator_input(std::string_view name);
 class OperatorSwitch final : public OperatorSource {
  public:
   /// `simulated` may be null (no simulated operator: the part starts held at `start`, still).
-  /// `spacenav` may be null (no SpaceMouse daemon).
+  /// `spacenav` may be null (no SpaceMouse daemon); `no_spacenav` then says why.
   OperatorSwitch(const SE3Space& space, std::shared_ptr<const OperatorSource> simulated,
-                 const Config& start, std::unique_ptr<SpaceNav> spacenav = nullptr);
+                 const Config& start, std::unique_ptr<SpaceNav> spacenav = nullptr,
+                 std::string no_spacenav = "no SpaceMouse");
 
   DeviceReading read(double t) const override { return read_paced(t, t); }
   DeviceReading read_paced(double t, double pace) const override;
@@ -69,6 +70,7 @@ class OperatorSwitch final : public OperatorSource {
   const SE3Space& space_;
   std::shared_ptr<const OperatorSource> simulated_;
   std::unique_ptr<SpaceNav> spacenav_;  ///< used on the operator thread only
+  std::string no_spacenav_;
   mutable std::mutex mutex_;
   // Guarded by mutex_.
   OperatorInput input_;

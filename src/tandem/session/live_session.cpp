@@ -22,12 +22,11 @@ std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunS
   if (spec.operator_name != "browser")
     simulated = make_operator(problem, spec, OperatorClock::seconds);
   std::unique_ptr<SpaceNav> nav;
-  if (spacemouse) {
-    std::string why;
+  std::string why = "no SpaceMouse (not asked for)";
+  if (spacemouse)
     nav = SpaceNav::open(&why);
-  }
   return std::make_shared<OperatorSwitch>(problem.space, std::move(simulated), problem.start,
-                                          std::move(nav));
+                                          std::move(nav), std::move(why));
 }
 
 JournalHeader header_for(const Problem& problem, const RunSpec& spec, const LiveOptions& options,

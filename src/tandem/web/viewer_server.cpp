@@ -182,7 +182,7 @@ class ViewerServer::Impl {
   http::response<http::string_body> respond(const http::request<Body>& req) const;
   /// Why a request is refused (403), if it is.
   template <class Body>
-  std::optional<std::string> refusal(const http::request<Body>& req, bool websocket) const;
+  std::optional<std::string> refusal(const http::request<Body>& req) const;
 
   void accept();
   void schedule_tick();
@@ -255,11 +255,8 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 
   void send_error(const std::string& message) {
     nlohmann::json j{{"type", "error"}, {"message", message}};
-    queue_.push_front({false, j.dump()});
-    if (writing_) {
-      // The frame being written is at the front; keep it there.
-      std::swap(queue_[0], queue_[1]);
-    }
+    // Next in line; the frame being written, if any, is at the front and stays there.
+    queue_.insert(queue_.begin() + (writing_ ? 1 : 0), Frame{false, j.dump()});
     pump();
   }
 
@@ -344,7 +341,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     http::request<http::string_body> req = parser_->release();
     const std::string target(req.target());
     const bool upgrade = websocket::is_upgrade(req);
-    if (auto why = server_.refusal(req, upgrade)) {
+    if (auto why = server_.refusal(req)) {
       log_line("refused " + target.substr(0, target.find('?')) + " from " + peer() + ": " + *why);
       write(plain_reply(http::status::forbidden, req.version(), "403 forbidden: " + *why + "\n"));
       return;
@@ -418,16 +415,14 @@ void ViewerServer::Impl::schedule_tick() {
 }
 
 template <class Body>
-std::optional<std::string> ViewerServer::Impl::refusal(const http::request<Body>& req,
-                                                       bool websocket) const {
+std::optional<std::string> ViewerServer::Impl::refusal(const http::request<Body>& req) const {
   const std::string host(req[http::field::host]);
   if (!allowed_hosts_.contains(host))
     return "Host '" + host.substr(0, 80) + "' is not this server";
-  if (websocket || req.find(http::field::origin) != req.end()) {
-    const auto origin = req.find(http::field::origin);
-    if (origin != req.end() && origin->value() != "http://" + host)
-      return "Origin '" + std::string(origin->value()).substr(0, 80) +
-             "' is not this server's page";
+  // A browser always sends Origin with a WebSocket (and with cross-site requests).
+  if (const auto origin = req.find(http::field::origin);
+      origin != req.end() && origin->value() != "http://" + host) {
+    return "Origin '" + std::string(origin->value()).substr(0, 80) + "' is not this server's page";
   }
   const std::string_view target = sv(req.target());
   const auto q = target.find('?');

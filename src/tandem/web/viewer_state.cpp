@@ -141,36 +141,55 @@ std::vector<Frame> ViewerState::pending(Cursor& cursor, std::size_t max_nodes) c
   return frames;
 }
 
+namespace {
+
+/// What every status message says: the planner, its run and its statistics.
+json status_fields(const Planner& planner, std::string_view status, std::string_view mode,
+                   double elapsed_s) {
+  const PlannerStats& s = planner.stats();
+  return json{{"type", "status"},
+              {"status", status},
+              {"mode", mode},
+              {"planner", planner.name()},
+              {"seed", planner.settings().seed},
+              {"elapsed_s", elapsed_s},
+              {"iterations", s.iterations},
+              {"nodes", s.nodes},
+              {"edges", s.edges},
+              {"collision_checks", s.collision_checks},
+              {"nodes_by_source", s.nodes_by_source}};
+}
+
+}  // namespace
+
 std::string live_status_json(const LiveSession& session, const Planner& planner) {
   const LiveProgress p = session.progress();
   const PlannerStats& s = planner.stats();
   const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
-  return json{{"type", "status"},
-              {"status", std::string(to_string(p.status))},
-              {"paused", p.paused},
-              {"mode", std::string(to_string(session.spec().mode))},
-              {"planner", std::string(planner.name())},
-              {"seed", session.spec().settings.seed},
-              {"elapsed_s", p.elapsed_s},
-              {"steps", p.steps},
-              {"resets", p.resets},
-              {"iterations", s.iterations},
-              {"iterations_per_s", p.iterations_per_s},
-              {"nodes", s.nodes},
-              {"edges", s.edges},
-              {"collision_checks", s.collision_checks},
-              {"nodes_by_source", s.nodes_by_source},
-              {"operator_iterations", s.operator_iterations},
-              {"contact_entries", s.contact_entries},
-              {"operator_rate_hz", p.operator_rate_hz},
-              {"input", std::string(to_string(input.input))},
-              {"simulated_available", input.simulated_available},
-              {"spacemouse_available", input.spacemouse_available},
-              {"spacemouse_status", input.spacemouse_status},
-              {"input_latency_ms", 1000.0 * p.input_latency_s},
-              {"input_latency_id", p.input_latency_id},
-              {"settings", interaction_json(session.interaction())}}
-      .dump();
+  json j = status_fields(planner, to_string(p.status), to_string(session.spec().mode), p.elapsed_s);
+  j.update(json{{"paused", p.paused},
+                {"steps", p.steps},
+                {"resets", p.resets},
+                {"iterations_per_s", p.iterations_per_s},
+                {"operator_iterations", s.operator_iterations},
+                {"contact_entries", s.contact_entries},
+                {"operator_rate_hz", p.operator_rate_hz},
+                {"input", to_string(input.input)},
+                {"simulated_available", input.simulated_available},
+                {"spacemouse_available", input.spacemouse_available},
+                {"spacemouse_status", input.spacemouse_status},
+                {"input_latency_ms", 1000.0 * p.input_latency_s},
+                {"input_latency_id", p.input_latency_id},
+                {"settings", interaction_json(session.interaction())}});
+  return j.dump();
+}
+
+std::string replay_status_json(const Planner& planner, std::string_view mode, double elapsed_s,
+                               bool done) {
+  json j =
+      status_fields(planner, done ? to_string(planner.status()) : "replaying", mode, elapsed_s);
+  j.update(json{{"paused", false}, {"input", "replay"}, {"replay", true}});
+  return j.dump();
 }
 
 std::string operator_json(const OperatorState* state, const InteractionSettings& settings,

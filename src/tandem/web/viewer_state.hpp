@@ -76,6 +76,9 @@ class ViewerState final : public LiveObserver {
 
 /// The status and operator messages of a live session (JSON text).
 std::string live_status_json(const LiveSession& session, const Planner& planner);
+/// The status message of a replay: "replaying", then the planner's status when `done`.
+std::string replay_status_json(const Planner& planner, std::string_view mode, double elapsed_s,
+                               bool done);
 std::string operator_json(const OperatorState* state, const InteractionSettings& settings,
                           const SE3Space& space, const Guidance* guidance);
 
