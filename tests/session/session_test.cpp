@@ -228,6 +228,9 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   std::thread planner([&] { status = session.run(); });
 
   ASSERT_TRUE(eventually([&] { return session.progress().stats.nodes > 3; }));
+  const std::uint64_t running_at = session.progress().steps;
+  session.step_once();  // while running: ignored, not kept for later
+  ASSERT_TRUE(eventually([&] { return session.progress().steps > running_at; }));
   session.pause();
   ASSERT_TRUE(eventually([&] { return session.progress().paused; }));
   const std::uint64_t paused_at = session.progress().steps;
@@ -260,6 +263,8 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   EXPECT_THAT(events, HasSubstr("input simulated;"));
   EXPECT_THAT(events, HasSubstr("pause;"));
   EXPECT_THAT(events, HasSubstr("step "));  // the two steps, in one record or two
+  EXPECT_LT(events.find("pause;"), events.find("step "))
+      << "a step asked for while running counted";
   EXPECT_THAT(events, HasSubstr("input browser;"));
   EXPECT_THAT(events, HasSubstr("resume;"));
   EXPECT_EQ(journal.digests.back().digest, live_digest);

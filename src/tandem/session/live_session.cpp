@@ -151,9 +151,12 @@ void LiveSession::apply_commands() {
     paused_ = *p.paused;
     journal_->event(steps_, paused_ ? "pause" : "resume");
   }
-  if (p.steps > 0)
+  // A step is one iteration of a paused planner; asked for while it runs, it means nothing (and
+  // must not fire later, at the next pause).
+  if (p.steps > 0 && paused_) {
     journal_->event(steps_, "step " + std::to_string(p.steps));
-  steps_requested_ += p.steps;
+    steps_requested_ += p.steps;
+  }
 }
 
 void LiveSession::journal_feed() {

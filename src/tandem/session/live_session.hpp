@@ -94,7 +94,7 @@ class LiveSession {
   void set_interaction(const InteractionSettings& settings);
   void pause();
   void resume();
-  /// While paused: one more planner step.
+  /// While paused: one more planner step (ignored while the planner runs).
   void step_once();
   /// Starts the planner over (same seed, new trees); the journal records where.
   void reset();
