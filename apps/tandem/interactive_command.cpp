@@ -86,7 +86,7 @@ class LiveControl final : public ViewerControl {
 
 int run_interactive(InteractiveArgs args) {
   if (!args.headless)
-    require_front_end(server_options(args.viewer).web_root);
+    check_server_options(server_options(args.viewer));
   const Problem problem = load_problem(args.run.problem);
   if (!args.run.mode)
     args.run.mode = "interactive-contact";

@@ -48,7 +48,7 @@ extern "C" void on_replay_signal(int) {
 
 int run_replay(const ReplayArgs& args) {
   if (args.serve)
-    require_front_end(server_options(args.viewer).web_root);
+    check_server_options(server_options(args.viewer));
   const Journal journal = read_journal(args.session);
   ProblemArgs problem_args;
   problem_args.problem = journal.header.problem;

@@ -369,6 +369,11 @@ TEST(Cli, InteractiveAndReplayRejectBadInput) {
   expect_bad_input({"interactive", "cluttered-1", "--web-root", nowhere},
                    {"nowhere", "front end is not built", "--headless"});
   expect_bad_input({"replay", "x.jsonl", "--serve", "--web-root", nowhere}, {"nowhere"});
+  const std::string journal = (dir.path() / "s.jsonl").string();
+  expect_bad_input(
+      {"interactive", "cluttered-1", "--host", "nothost", "--port", "0", "--session", journal},
+      {"--host", "not an IP address"});
+  expect_bad_input({"interactive", "cluttered-1", "--port", "70000"}, {"--port"});
   expect_bad_input({"interactive", "cluttered-1", "--headless", "--mode", "birrt"},
                    {"--mode", "interactive mode"});
   expect_bad_input({"replay", (dir.path() / "none.jsonl").string()}, {"none.jsonl"});

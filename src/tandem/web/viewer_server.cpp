@@ -100,6 +100,14 @@ http::response<http::string_body> plain_reply(http::status status, unsigned vers
   return res;
 }
 
+net::ip::address listen_address(const std::string& host) {
+  boost::system::error_code ec;
+  const auto address = net::ip::make_address(host, ec);
+  if (ec)
+    throw InputError("--host", "'" + host + "' is not an IP address");
+  return address;
+}
+
 void log_line(const std::string& text) {
   std::cerr << "tandem viewer: " << text << '\n' << std::flush;
 }
@@ -136,10 +144,7 @@ class ViewerServer::Impl {
         acceptor_(ioc_),
         tick_(ioc_) {
     boost::system::error_code ec;
-    const auto address = net::ip::make_address(options.host, ec);
-    if (ec)
-      throw InputError("--host", "'" + options.host + "' is not an IP address");
-    const tcp::endpoint endpoint(address, options.port);
+    const tcp::endpoint endpoint(listen_address(options.host), options.port);
     acceptor_.open(endpoint.protocol(), ec);
     if (!ec)
       acceptor_.set_option(net::socket_base::reuse_address(true), ec);
@@ -492,17 +497,18 @@ http::response<http::string_body> ViewerServer::Impl::respond(
   return finish(http::status::ok, mime_type(file), std::move(*body));
 }
 
-void require_front_end(const std::filesystem::path& web_root) {
-  if (!std::filesystem::exists(web_root / "index.html")) {
-    throw InputError(web_root.string(),
+void check_server_options(const ServerOptions& options) {
+  if (!std::filesystem::exists(options.web_root / "index.html")) {
+    throw InputError(options.web_root.string(),
                      "the viewer's front end is not built here (scripts/build builds it, with npm "
                      "ci and vite in web/); or run with --headless");
   }
+  listen_address(options.host);
 }
 
 ViewerServer::ViewerServer(ViewerState& state, ViewerControl& control,
                            const ServerOptions& options) {
-  require_front_end(options.web_root);
+  check_server_options(options);
   impl_ = std::make_unique<Impl>(state, control, options);
 }
 

@@ -45,8 +45,9 @@ struct ServerOptions {
 /// The folder the front end is built into (web/dist in the source tree, or $TANDEM_WEB_ROOT).
 std::filesystem::path default_web_root();
 
-/// Throws InputError naming the folder when the front end is not built there.
-void require_front_end(const std::filesystem::path& web_root);
+/// Throws InputError naming the folder when the front end is not built there, or naming --host
+/// when it is not an IP address: what can be checked before a session starts.
+void check_server_options(const ServerOptions& options);
 
 /// A token of 32 hex digits from the system's random source.
 std::string random_token();
