@@ -17,10 +17,17 @@ export function scratch() {
   return mkdtempSync(path.join(tmpdir(), 'tandem-viewer-'));
 }
 
+// Every tandem this process started, ended (Ctrl-C) when it exits, also after an uncaught error: a
+// failed test or benchmark must not leave a planner running on the machine.
+const running = new Set();
+process.on('exit', () => { for (const proc of running) proc.kill('SIGINT'); });
+
 /** Runs `tandem ARGS` until it prints its viewer's URL; resolves to {proc, url, port, token, output}. */
 export function startTandem(args, { urlPattern = /viewer: (http:\/\/\S+)/ } = {}) {
   if (!existsSync(tandemBin)) throw new Error(`no tandem binary at ${tandemBin} (build it first)`);
   const proc = spawn(tandemBin, args, { stdio: ['ignore', 'pipe', 'pipe'] });
+  running.add(proc);
+  proc.on('exit', () => running.delete(proc));
   const run = { proc, output: '', errors: '', exited: null };
   proc.stdout.on('data', (d) => { run.output += d; });
   proc.stderr.on('data', (d) => { run.errors += d; });
