@@ -72,33 +72,45 @@ if (parts.has('latency')) {
   console.error(`latency: ${JSON.stringify(result.latency)}`);
 }
 
-// 3. Frame rate with > 100k edges.
+// 3. Frame rate with > 100k edges: how the page draws with a software renderer (layers.js):
+//    the camera still (the kept image, new edges only), the camera turning (the trees thinned
+//    while it moves), the camera turning in full detail (?lod=0) and drawing everything every
+//    frame as with a GPU (?layers=off); while the planner runs, then paused.
 if (parts.has('fps')) {
   const trace = writeSwingTrace(dir, 600);
   // α = 0: the trees grow only toward the swinging part, so they reach 100k edges without solving.
   const run = await startTandem(['interactive', 'cluttered-2', '--mode', 'interactive', '--alpha', '0', '--operator',
     `trace:${trace}`, '--port', '0', '--session', path.join(dir, 'fps.jsonl')]);
-  // Uncapped (the viewer draws at most 30 frames a second by default) and, once the trees have
-  // 100k edges, the camera turning, so that every frame is drawn: what the renderer can do.
-  const page = await openViewer(browser, run, { query: '&maxfps=0' });
-  await page.waitForFunction(() => window.tandem.counts().edges > 100000, null, { timeout: 120000, polling: 500 });
-  await page.evaluate(() => window.tandem.spin(true));
-  const fps = async () => {
+  // Uncapped (the viewer draws at most 30 frames a second by default), a frame drawn every time
+  // (the camera turning, or redraw(true) with it still): what the renderer can do.
+  const ways = [
+    { name: 'still', query: '', hook: 'redraw' },
+    { name: 'turning', query: '', hook: 'spin' },
+    { name: 'turning_full_detail', query: '&lod=0', hook: 'spin' },
+    { name: 'turning_direct', query: '&layers=off', hook: 'spin' },
+  ];
+  const measure = async (way) => {
+    const page = await openViewer(browser, run, { query: `&maxfps=0${way.query}` });
+    await page.waitForFunction(() => window.tandem.counts().edges > 100000, null, { timeout: 120000, polling: 500 });
+    await page.evaluate((hook) => window.tandem[hook](true), way.hook);
+    await sleep(1000);
     const f0 = await page.evaluate(() => window.tandem.frames);
     const t0 = Date.now();
     await sleep(5000);
-    return (1000 * ((await page.evaluate(() => window.tandem.frames)) - f0)) / (Date.now() - t0);
+    const fps = (1000 * ((await page.evaluate(() => window.tandem.frames)) - f0)) / (Date.now() - t0);
+    const { edges } = await page.evaluate(() => window.tandem.counts());
+    const { drawnEdges } = await page.evaluate(() => window.tandem.rendering);
+    await page.close();
+    return { fps, edges, drawn_edges_last_frame: drawnEdges };
   };
-  const planning = await fps();
-
-  const edgesPlanning = (await page.evaluate(() => window.tandem.counts())).edges;
-  await page.click('#pause');
-  await page.waitForFunction(() => window.tandem.status.paused);
-  const paused = await fps();
-
-  const edgesPaused = (await page.evaluate(() => window.tandem.counts())).edges;
+  result.frame_rate = { planning: {}, paused: {} };
+  for (const way of ways) result.frame_rate.planning[way.name] = await measure(way);
+  const control = await openViewer(browser, run);
+  await control.click('#pause');
+  await control.waitForFunction(() => window.tandem.status.paused);
+  await control.close();
+  for (const way of ways) result.frame_rate.paused[way.name] = await measure(way);
   await stopTandem(run);
-  result.frame_rate = { planning_fps: planning, planning_edges: edgesPlanning, paused_fps: paused, paused_edges: edgesPaused };
   console.error(`frame rate: ${JSON.stringify(result.frame_rate)}`);
 }
 await browser.close();
@@ -118,8 +130,16 @@ if (result.latency) {
     `| input event sent → the page has its node (median, p90) | ${f(l.round_trip_median_ms, 1)} ms, ${f(l.round_trip_p90_ms, 1)} ms |`);
 }
 if (result.frame_rate) {
-  const r = result.frame_rate;
-  rows.push(`| frame rate, ${f(r.planning_edges)} edges, planner running (uncapped, camera turning) | ${f(r.planning_fps, 1)} fps |`,
-    `| frame rate, ${f(r.paused_edges)} edges, planner paused (uncapped, camera turning) | ${f(r.paused_fps, 1)} fps |`);
+  const what = {
+    still: 'camera still (kept image, new edges drawn)',
+    turning: 'camera turning (trees thinned while it moves)',
+    turning_full_detail: 'camera turning, full detail (`?lod=0`)',
+    turning_direct: 'camera turning, everything every frame (`?layers=off`, as with a GPU)',
+  };
+  for (const state of ['planning', 'paused']) {
+    for (const [name, r] of Object.entries(result.frame_rate[state])) {
+      rows.push(`| frame rate, ${f(r.edges)} edges, planner ${state === 'planning' ? 'running' : 'paused'}, ${what[name]}, uncapped; edges drawn | ${f(r.fps, 1)} fps; ${f(r.drawn_edges_last_frame)} |`);
+    }
+  }
 }
 console.log(rows.join('\n'));

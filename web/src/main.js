@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { TransformControls } from 'three/examples/jsm/controls/TransformControls.js';
 import { Trees, decodeNodes } from './trees.js';
+import { FrameRenderer } from './layers.js';
 import { Keyboard, Gamepads, SpaceMouseHID } from './inputs.js';
 
 const $ = (id) => document.getElementById(id);
@@ -22,27 +23,32 @@ function softwareGL() {
   return !gl || /SwiftShader|llvmpipe|software/i.test(info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : '');
 }
 const software = softwareGL();
-const renderer = new THREE.WebGLRenderer({ antialias: !software });
-renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio, 2));
-container.appendChild(renderer.domElement);
+const query = new URLSearchParams(location.search);
+// ?layers=on|off (default: on with a software renderer, see layers.js), ?lod=N (thin the trees
+// beyond N edges while the camera moves; 0 never).
+const layered = { on: true, off: false }[query.get('layers')] ?? software;
 const scene = new THREE.Scene();
-scene.background = new THREE.Color(0x1d2026);
 const camera = new THREE.PerspectiveCamera(50, 1, 0.01, 1000);
 camera.up.set(0, 0, 1);
-const orbit = new OrbitControls(camera, renderer.domElement);
+const layers = new FrameRenderer(container, scene, camera, {
+  layered, lodEdges: query.has('lod') ? Number(query.get('lod')) : undefined, antialias: !software,
+  pixelRatio: software ? 1 : Math.min(window.devicePixelRatio, 2), background: 0x1d2026 });
+const { staticRoot, dynamicRoot } = layers;
+const orbit = new OrbitControls(camera, layers.domElement);
 orbit.enableDamping = false;
 scene.add(new THREE.HemisphereLight(0xffffff, 0x445566, 1.6));
 const sun = new THREE.DirectionalLight(0xffffff, 1.4);
 sun.position.set(3, -5, 8);
 scene.add(sun);
 
-const trees = new Trees(scene);
+const trees = new Trees(staticRoot);
 const part = new THREE.Group();
-scene.add(part);
+dynamicRoot.add(part);
 const pathGhost = new THREE.Group();
 pathGhost.visible = false;
-scene.add(pathGhost);
+dynamicRoot.add(pathGhost);
 let pathLine = null;
+const overlaid = []; // meshes of the scene in the dynamic layer
 let solution = [];
 let extent = 10;
 
@@ -51,17 +57,17 @@ const planeMesh = new THREE.Mesh(
   new THREE.MeshBasicMaterial({ color: 0x4ade80, transparent: true, opacity: 0.25,
     side: THREE.DoubleSide, depthWrite: false }));
 planeMesh.visible = false;
-scene.add(planeMesh);
+dynamicRoot.add(planeMesh);
 const normalArrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, 0x4ade80);
 normalArrow.visible = false;
-scene.add(normalArrow);
+dynamicRoot.add(normalArrow);
 const forceArrow = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 1, 0xf472b6);
 forceArrow.visible = false;
-scene.add(forceArrow);
+dynamicRoot.add(forceArrow);
 
-const gizmo = new TransformControls(camera, renderer.domElement);
+const gizmo = new TransformControls(camera, layers.domElement);
 gizmo.setSize(0.8);
-scene.add(gizmo.getHelper());
+dynamicRoot.add(gizmo.getHelper());
 
 function meshOf(body, opacity = 1) {
   const g = new THREE.BufferGeometry();
@@ -91,13 +97,20 @@ async function loadScene() {
   if (!res.ok) throw new Error(`the scene: ${res.status} ${await res.text()}`);
   const s = await res.json();
   $('problem').textContent = s.name;
-  for (const body of s.obstacles) scene.add(meshOf(body));
+  // Transparent obstacles go with the dynamic layer: drawn after everything opaque, as three.js
+  // orders them.
+  for (const body of s.obstacles) {
+    const m = meshOf(body);
+    (m.material.transparent ? dynamicRoot : layers.obstacles).add(m);
+    if (m.material.transparent) overlaid.push(m);
+  }
   part.add(meshOf(s.object));
   pathGhost.add(meshOf(s.object, 0.45));
   const ghost = (q, colour) => {
     const m = meshOf({ ...s.object, color: colour }, 0.3);
     setPose(m, q);
-    scene.add(m);
+    dynamicRoot.add(m);
+    overlaid.push(m);
   };
   ghost(s.start, [0.3, 0.6, 1, 1]);
   ghost(s.goal, [0.3, 1, 0.5, 1]);
@@ -109,10 +122,10 @@ async function loadScene() {
   const grid = new THREE.GridHelper(size * 1.2, 12, 0x555b66, 0x3a3f48);
   grid.rotation.x = Math.PI / 2; // the grid in the xy plane: z up
   grid.position.set(centre.x, centre.y, min.z);
-  scene.add(grid);
+  staticRoot.add(grid);
   const axes = new THREE.AxesHelper(size * 0.1);
   axes.position.set(min.x, min.y, min.z);
-  scene.add(axes);
+  staticRoot.add(axes);
   orbit.target.copy(centre);
   camera.position.copy(centre).add(new THREE.Vector3(0.6, -1.1, 0.8).multiplyScalar(extent * 0.8));
   camera.near = extent / 1000;
@@ -125,7 +138,7 @@ async function loadScene() {
 
 function resize() {
   const w = container.clientWidth, h = container.clientHeight;
-  renderer.setSize(w, h);
+  layers.setSize(w, h);
   camera.aspect = w / Math.max(h, 1);
   camera.updateProjectionMatrix();
 }
@@ -201,7 +214,7 @@ function onStatus(m) {
     ['operator loop', m.operator_rate_hz === undefined ? '—' : `${fmt(m.operator_rate_hz)} Hz`],
     ['input', m.input],
     ['input → node', m.input_latency_id ? `${fmt(m.input_latency_ms, 1)} ms` : '—'],
-    ['viewer', `${fmt(fps)} fps`],
+    ['viewer', `${fmt(fps)} fps${layers.drawn < trees.edgeCount() ? `, ${fmt(layers.drawn)} edges while turning` : ''}`],
   ];
   $('status').innerHTML = rows.map(([k, v]) => `<tr><td>${k}</td><td>${v}</td></tr>`).join('');
   if (m.settings) syncTuning(m.settings);
@@ -215,7 +228,8 @@ function onStatus(m) {
 function clearSolution() {
   dirty = true;
   solution = [];
-  if (pathLine) { scene.remove(pathLine); pathLine.geometry.dispose(); pathLine = null; }
+  if (pathLine) { staticRoot.remove(pathLine); pathLine.geometry.dispose(); pathLine = null; }
+  layers.invalidate();
   pathGhost.visible = false;
   playing = false;
   $('path-box').hidden = true;
@@ -227,7 +241,8 @@ function onSolution(path) {
   solution = path;
   const g = new THREE.BufferGeometry().setFromPoints(path.map((q) => new THREE.Vector3(q[0], q[1], q[2])));
   pathLine = new THREE.Line(g, new THREE.LineBasicMaterial({ color: 0xfacc15 }));
-  scene.add(pathLine);
+  staticRoot.add(pathLine);
+  layers.invalidate();
   $('path-box').hidden = false;
   showMessage(`solved: a path of ${path.length} states`, 'ok');
 }
@@ -339,15 +354,16 @@ $('show-nodes').onchange = (e) => { trees.setShowNodes(e.target.value); dirty = 
 // --- the frame loop ------------------------------------------------------------------------------
 // A frame is drawn only when something changed, at most maxfps times a second (default 30; the
 // URL's ?maxfps=0 lifts the cap): a software renderer then leaves the planner its core.
-const maxfps = Number(new URLSearchParams(location.search).get('maxfps') ?? 30);
+const maxfps = Number(query.get('maxfps') ?? 30);
 orbit.autoRotateSpeed = 4;
 let dirty = true;
 const touch = () => { dirty = true; };
-orbit.addEventListener('change', touch);
+orbit.addEventListener('change', () => { layers.cameraMoved(performance.now()); dirty = true; });
 gizmo.addEventListener('change', touch);
 window.addEventListener('resize', touch);
 let fps = 0, frames = 0, fpsFrames = 0, fpsSince = performance.now(), lastFrame = performance.now();
 let lastRender = 0;
+let redrawAlways = false;
 function frame(now) {
   requestAnimationFrame(frame);
   const dt = Math.min((now - lastFrame) / 1000, 0.1);
@@ -356,7 +372,7 @@ function frame(now) {
   if (orbit.autoRotate) orbit.update(dt);
   if (op && !dragging && now > drivingUntil) setPose(part, op.q);
   if (now - fpsSince >= 1000) { fps = (1000 * fpsFrames) / (now - fpsSince); fpsFrames = 0; fpsSince = now; }
-  if (!dirty && !dragging && !playing) return;
+  if (!dirty && !dragging && !playing && !redrawAlways && !layers.needsFrame(now)) return;
   if (maxfps > 0 && now - lastRender < 1000 / maxfps - 2) return;
   lastRender = now;
   dirty = false;
@@ -390,7 +406,7 @@ function frame(now) {
     $('scrub').value = String(Math.round(playT * 1000));
     showPathAt(playT);
   }
-  renderer.render(scene, camera);
+  layers.render(trees, now);
   ++frames; ++fpsFrames;
 }
 
@@ -401,8 +417,12 @@ window.tandem = {
   get status() { return status; },
   get operator() { return op; },
   get fps() { return fps; },
+  /** How the page draws ('layered' or 'direct', see layers.js) and how many edges its last frame drew. */
+  get rendering() { return { mode: layered ? 'layered' : 'direct', drawnEdges: layers.drawn }; },
   /** Turns the camera about the scene without end (a frame to draw every time: for measuring). */
   spin(on) { orbit.autoRotate = on; },
+  /** Draws a frame every time, the camera still (for measuring). */
+  redraw(on) { redrawAlways = on; },
   get frames() { return frames; },
   get solution() { return solution; },
   get errors() { return errors.slice(); },
@@ -413,10 +433,20 @@ window.tandem = {
   /** Where a world point is on the page, in CSS pixels. */
   screenOf(x, y, z) {
     const v = new THREE.Vector3(x, y, z).project(camera);
-    const r = renderer.domElement.getBoundingClientRect();
+    const r = layers.domElement.getBoundingClientRect();
     return { x: r.left + (v.x + 1) / 2 * r.width, y: r.top + (1 - v.y) / 2 * r.height };
   },
   partScreen() { return this.screenOf(part.position.x, part.position.y, part.position.z); },
+  /** The bounding boxes on the page, in CSS pixels, of the meshes that the layered drawing draws
+   * over the trees (layers.js): the part, the start and goal ghosts, transparent obstacles. */
+  overlaidBoxes() { return [part, ...overlaid].map((o) => this.screenBoxOf(o)); },
+  screenBoxOf(object) {
+    const box = new THREE.Box3().setFromObject(object);
+    const corners = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => this.screenOf(
+      k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
+    const xs = corners.map((c) => c.x), ys = corners.map((c) => c.y);
+    return { left: Math.min(...xs), top: Math.min(...ys), right: Math.max(...xs), bottom: Math.max(...ys) };
+  },
 };
 
 loadScene()

@@ -1,6 +1,8 @@
 // The planner's trees in three.js: per tree, one LineSegments and one Points over preallocated
-// buffers that grow by doubling; new nodes are appended (the server sends deltas only) and the draw
-// range is extended, so a frame costs the same with 100k edges as with 100.
+// buffers that grow by doubling; new nodes are appended (the server sends deltas only) and only the
+// new part is uploaded. The draw ranges say what a frame draws (see layers.js): everything, only
+// what came since the last frame, or a thinned subset (every k-th edge, through an index over the
+// same buffers) while the camera moves.
 import * as THREE from 'three';
 
 export const SOURCE_COLOURS = [
@@ -35,7 +37,7 @@ function labelColour(label, out) {
 }
 
 class TreeView {
-  constructor(scene, index) {
+  constructor(group, index) {
     this.index = index;
     this.count = 0;
     this.capacity = 0;
@@ -44,6 +46,12 @@ class TreeView {
     this.labels = new Float32Array(0);
     this.parents = new Uint32Array(0);
     this.edges = 0;
+    this.drawnEdges = 0; // what the kept image has (layers.js)
+    this.drawnNodes = 0;
+    this.showPoints = true;
+    this.stride = 0; // of the thinned index
+    this.thinnedEdges = 0;
+    this.thinnedUpTo = 0;
     this.lineGeometry = new THREE.BufferGeometry();
     this.pointGeometry = new THREE.BufferGeometry();
     this.lines = new THREE.LineSegments(
@@ -52,9 +60,12 @@ class TreeView {
     this.points = new THREE.Points(
       this.pointGeometry,
       new THREE.PointsMaterial({ vertexColors: true, size: 2, sizeAttenuation: false }));
-    this.lines.frustumCulled = false;
-    this.points.frustumCulled = false;
-    scene.add(this.lines, this.points);
+    this.thinGeometry = new THREE.BufferGeometry();
+    this.thinGeometry.setIndex(new THREE.BufferAttribute(new Uint32Array(2048), 1));
+    this.thinLines = new THREE.LineSegments(this.thinGeometry, this.lines.material);
+    this.thinLines.visible = false;
+    for (const o of [this.lines, this.points, this.thinLines]) o.frustumCulled = false;
+    group.add(this.lines, this.points, this.thinLines);
     this.grow(1024);
   }
 
@@ -76,6 +87,8 @@ class TreeView {
     const dyn = (array) => new THREE.BufferAttribute(array, 3).setUsage(THREE.DynamicDrawUsage);
     this.lineGeometry.setAttribute('position', dyn(linePos));
     this.lineGeometry.setAttribute('color', dyn(lineCol));
+    this.thinGeometry.setAttribute('position', this.lineGeometry.getAttribute('position'));
+    this.thinGeometry.setAttribute('color', this.lineGeometry.getAttribute('color'));
     // The points share the node positions array.
     this.pointGeometry.setAttribute('position', dyn(this.nodePositions));
     this.pointGeometry.setAttribute('color', dyn(pointCol));
@@ -123,9 +136,56 @@ class TreeView {
     const pointPos = this.pointGeometry.getAttribute('position');
     upload(pointPos, 3 * batch.first, 3 * needed);
     upload(pointCol, 3 * batch.first, 3 * needed);
-    this.lineGeometry.setDrawRange(0, 2 * this.edges);
-    this.pointGeometry.setDrawRange(0, this.count);
+    this.setRange('all');
     return true;
+  }
+
+  /** 'all', 'new' (since markDrawn) or 'thinned' (every stride-th edge, no nodes). */
+  setRange(mode, stride) {
+    if (mode === 'thinned') this.thin(stride);
+    const from = mode === 'new' ? this.drawnEdges : 0, nodesFrom = mode === 'new' ? this.drawnNodes : 0;
+    this.lineGeometry.setDrawRange(2 * from, 2 * (this.edges - from));
+    this.pointGeometry.setDrawRange(nodesFrom, this.count - nodesFrom);
+    this.lines.visible = mode !== 'thinned';
+    this.points.visible = this.showPoints && mode !== 'thinned';
+    this.thinLines.visible = mode === 'thinned';
+  }
+
+  markDrawn() {
+    this.drawnEdges = this.edges;
+    this.drawnNodes = this.count;
+  }
+
+  /** Brings the thinned index up to date: the edges 0, stride, 2 stride, … */
+  thin(stride) {
+    if (stride !== this.stride) {
+      this.stride = stride;
+      this.thinnedEdges = 0;
+      this.thinnedUpTo = 0;
+    }
+    const wanted = Math.ceil(this.edges / stride);
+    let index = this.thinGeometry.getIndex();
+    if (2 * wanted > index.array.length) {
+      let n = index.array.length;
+      while (n < 2 * wanted) n *= 2;
+      const a = new Uint32Array(n);
+      a.set(index.array);
+      index = new THREE.BufferAttribute(a, 1).setUsage(THREE.DynamicDrawUsage);
+      this.thinGeometry.setIndex(index);
+    }
+    const first = this.thinnedEdges;
+    for (let e = this.thinnedUpTo; e < this.edges; e += stride) {
+      index.array[2 * this.thinnedEdges] = 2 * e;
+      index.array[2 * this.thinnedEdges + 1] = 2 * e + 1;
+      this.thinnedEdges++;
+      this.thinnedUpTo = e + stride;
+    }
+    if (this.thinnedEdges > first) {
+      index.clearUpdateRanges();
+      index.addUpdateRange(2 * first, 2 * (this.thinnedEdges - first));
+      index.needsUpdate = true;
+    }
+    this.thinGeometry.setDrawRange(0, 2 * this.thinnedEdges);
   }
 
   nodeColour(i, colourBy, out) {
@@ -150,18 +210,21 @@ class TreeView {
     pointCol.needsUpdate = true;
   }
 
-  dispose(scene) {
-    scene.remove(this.lines, this.points);
+  dispose(group) {
+    group.remove(this.lines, this.points, this.thinLines);
     this.lineGeometry.dispose();
     this.pointGeometry.dispose();
+    this.thinGeometry.dispose();
   }
 }
 
 /** All trees of the session; `counts` for the status and the tests. */
 export class Trees {
-  constructor(scene) {
-    this.scene = scene;
+  constructor(parent) {
+    this.group = new THREE.Group();
+    parent.add(this.group);
     this.views = [];
+    this.changed = true; // drawn otherwise than the kept image shows (layers.js)
     this.colourBy = 'source';
     this.showNodes = 'auto';
     this.generation = 0;
@@ -173,16 +236,20 @@ export class Trees {
     for (const v of this.views) this.updateNodes(v);
   }
   updateNodes(v) {
-    v.points.visible = this.showNodes === 'on' || (this.showNodes === 'auto' && v.count <= AUTO_NODES);
+    const show = this.showNodes === 'on' || (this.showNodes === 'auto' && v.count <= AUTO_NODES);
+    if (show !== v.showPoints) this.changed = true;
+    v.showPoints = show;
+    v.setRange('all');
   }
   clear(generation) {
-    for (const v of this.views) v.dispose(this.scene);
+    for (const v of this.views) v.dispose(this.group);
     this.views = [];
     this.generation = generation;
+    this.changed = true;
   }
   add(batch) {
     if (batch.generation !== this.generation) return true; // an old generation's leftovers
-    while (this.views.length <= batch.tree) this.views.push(new TreeView(this.scene, this.views.length));
+    while (this.views.length <= batch.tree) this.views.push(new TreeView(this.group, this.views.length));
     const v = this.views[batch.tree];
     const ok = v.add(batch, this.colourBy);
     this.updateNodes(v);
@@ -191,7 +258,20 @@ export class Trees {
   setColourBy(mode) {
     this.colourBy = mode;
     for (const v of this.views) v.recolour(mode);
+    this.changed = true;
   }
+  /** Draw ranges for a frame: 'all', 'new' or 'thinned' (to about `budget` edges in all). */
+  setRange(mode, budget = Infinity) {
+    const stride = mode === 'thinned' ? 2 ** Math.ceil(Math.log2(Math.max(1, this.edgeCount() / budget))) : 1;
+    for (const v of this.views) v.setRange(mode, stride);
+  }
+  markDrawn() {
+    for (const v of this.views) v.markDrawn();
+    this.changed = false;
+  }
+  hasNew() { return this.views.some((v) => v.edges > v.drawnEdges || v.count > v.drawnNodes); }
+  edgeCount() { return this.views.reduce((n, v) => n + v.edges, 0); }
+  thinnedCount() { return this.views.reduce((n, v) => n + v.thinnedEdges, 0); }
   counts() {
     const bySource = [0, 0, 0, 0];
     let nodes = 0, edges = 0;
