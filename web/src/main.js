@@ -16,11 +16,13 @@ THREE.Object3D.DEFAULT_UP.set(0, 0, 1);
 // --- three.js scene ------------------------------------------------------------------------------
 const container = $('view');
 // Multisampling costs a software renderer (SwiftShader, as in headless Chromium) most of its
-// frame: only with a real GPU.
+// frame: only with a real GPU; and without one the page draws in layers (layers.js).
 function softwareGL() {
   const gl = document.createElement('canvas').getContext('webgl2');
   const info = gl?.getExtension('WEBGL_debug_renderer_info');
-  return !gl || /SwiftShader|llvmpipe|software/i.test(info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : '');
+  const software = !gl || /SwiftShader|llvmpipe|software/i.test(info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : '');
+  gl?.getExtension('WEBGL_lose_context')?.loseContext(); // the probe's context is not kept
+  return software;
 }
 const software = softwareGL();
 const query = new URLSearchParams(location.search);
