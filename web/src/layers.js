@@ -36,11 +36,10 @@ export class FrameRenderer {
     this.camera = camera;
     this.layered = layered;
     this.lodEdges = lodEdges;
-    this.background = new THREE.Color(background);
     // The static canvas (or the only one), whose element takes the pointer events.
     this.renderer = new THREE.WebGLRenderer({ antialias, preserveDrawingBuffer: layered });
     this.renderer.setPixelRatio(pixelRatio);
-    this.renderer.setClearColor(this.background, 1);
+    this.renderer.setClearColor(background, 1);
     container.appendChild(this.renderer.domElement);
     this.staticRoot = new THREE.Group();
     this.obstacles = new THREE.Group();
@@ -104,7 +103,6 @@ export class FrameRenderer {
       renderer.clear();
       trees.setRange(thin ? 'thinned' : 'all', this.lodEdges);
       renderer.render(scene, camera);
-      trees.setRange('all');
       this.drawnEdges = thin ? trees.thinnedCount() : trees.edgeCount();
       this.valid = false;
       this.thinned = thin;
@@ -130,7 +128,6 @@ export class FrameRenderer {
     }
     trees.markDrawn();
     this.thinned = false;
-    trees.setRange('all');
     this.dynamicRoot.visible = true;
     // The dynamic canvas: the obstacles into its depth only, then the dynamic layer.
     this.overlay.clear();

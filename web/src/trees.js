@@ -49,9 +49,8 @@ class TreeView {
     this.drawnEdges = 0; // what the kept image has (layers.js)
     this.drawnNodes = 0;
     this.showPoints = true;
-    this.stride = 0; // of the thinned index
-    this.thinnedEdges = 0;
-    this.thinnedUpTo = 0;
+    this.stride = 0; // of the thinned index, which holds the edges 0, stride, … below
+    this.thinnedEdges = 0; // stride * thinnedEdges
     this.lineGeometry = new THREE.BufferGeometry();
     this.pointGeometry = new THREE.BufferGeometry();
     this.lines = new THREE.LineSegments(
@@ -136,11 +135,11 @@ class TreeView {
     const pointPos = this.pointGeometry.getAttribute('position');
     upload(pointPos, 3 * batch.first, 3 * needed);
     upload(pointCol, 3 * batch.first, 3 * needed);
-    this.setRange('all');
     return true;
   }
 
-  /** 'all', 'new' (since markDrawn) or 'thinned' (every stride-th edge, no nodes). */
+  /** What the next draw draws: 'all', 'new' (since markDrawn) or 'thinned' (every stride-th
+   * edge, no nodes). FrameRenderer sets it before every draw. */
   setRange(mode, stride) {
     if (mode === 'thinned') this.thin(stride);
     const from = mode === 'new' ? this.drawnEdges : 0, nodesFrom = mode === 'new' ? this.drawnNodes : 0;
@@ -161,7 +160,6 @@ class TreeView {
     if (stride !== this.stride) {
       this.stride = stride;
       this.thinnedEdges = 0;
-      this.thinnedUpTo = 0;
     }
     const wanted = Math.ceil(this.edges / stride);
     let index = this.thinGeometry.getIndex();
@@ -174,11 +172,10 @@ class TreeView {
       this.thinGeometry.setIndex(index);
     }
     const first = this.thinnedEdges;
-    for (let e = this.thinnedUpTo; e < this.edges; e += stride) {
+    for (let e = stride * this.thinnedEdges; e < this.edges; e += stride) {
       index.array[2 * this.thinnedEdges] = 2 * e;
       index.array[2 * this.thinnedEdges + 1] = 2 * e + 1;
       this.thinnedEdges++;
-      this.thinnedUpTo = e + stride;
     }
     if (this.thinnedEdges > first) {
       index.clearUpdateRanges();
@@ -239,7 +236,6 @@ export class Trees {
     const show = this.showNodes === 'on' || (this.showNodes === 'auto' && v.count <= AUTO_NODES);
     if (show !== v.showPoints) this.changed = true;
     v.showPoints = show;
-    v.setRange('all');
   }
   clear(generation) {
     for (const v of this.views) v.dispose(this.group);

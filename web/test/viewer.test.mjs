@@ -70,10 +70,8 @@ test('the page loads, shows the scene and the tree grows', { timeout: 90000 }, a
  * how many are near the colour `mark`. */
 async function comparePictures(page, a, b, { background, mark, skip }) {
   return page.evaluate(async ([a, b, background, mark, skip]) => {
-    let img0;
     const pixels = async (png) => {
       const img = new Image();
-      img0 = img;
       img.src = `data:image/png;base64,${png}`;
       await img.decode();
       const c = document.createElement('canvas');
@@ -81,12 +79,12 @@ async function comparePictures(page, a, b, { background, mark, skip }) {
       c.height = img.height;
       const g = c.getContext('2d');
       g.drawImage(img, 0, 0);
-      return g.getImageData(0, 0, c.width, c.height).data;
+      return { data: g.getImageData(0, 0, c.width, c.height).data, width: c.width };
     };
-    const [pa, pb] = [await pixels(a), await pixels(b)];
+    const { data: pa, width } = await pixels(a);
+    const { data: pb } = await pixels(b);
     const far = (p, i, q, j) => Math.max(Math.abs(p[i] - q[j]), Math.abs(p[i + 1] - q[j + 1]), Math.abs(p[i + 2] - q[j + 2])) > 40;
     let differ = 0, drawn = 0, marked = 0;
-    const width = img0.width;
     for (let i = 0; i < pa.length; i += 4) {
       const x = (i / 4) % width, y = Math.floor(i / 4 / width);
       if (skip.some((b) => x >= b.left && x <= b.right && y >= b.top && y <= b.bottom)) continue;
