@@ -32,6 +32,7 @@
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 
 namespace ob = ompl::base;

@@ -14,11 +14,11 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/experiments/bench_runner.hpp"
 #include "tandem/experiments/experiment.hpp"
 #include "tandem/experiments/ompl_log.hpp"
 #include "tandem/experiments/report.hpp"
-#include "tandem/io/text.hpp"
 
 namespace tandem::cli {
 namespace {

@@ -84,24 +84,23 @@ class LiveControl final : public ViewerControl {
   LiveSession& session_;
 };
 
-int run_interactive(InteractiveArgs args) {
-  if (!args.headless)
-    check_server_options(server_options(args.viewer));
-  const Problem problem = load_problem(args.run.problem);
+/// The run a live session makes: a planner that takes an operator, 600 s unless told otherwise.
+RunSpec live_spec(InteractiveArgs& args, const Problem& problem) {
   if (!args.run.mode)
     args.run.mode = "interactive-contact";
   RunSpec spec = make_spec(args.run, problem);
-  if (!is_interactive(spec.mode)) {
+  if (!uses_operator(spec)) {
     throw InputError("--mode",
-                     "a live session needs an interactive mode (interactive, "
-                     "interactive-contact or irrt)");
+                     "a live session needs a planner that takes an operator, not " + spec.mode);
   }
   if (!args.run.time_limit)
     spec.time_limit = 600.0;
-  {
-    CollisionChecker checker(problem.scene);
-    require_valid_endpoints(problem, checker);
-  }
+  CollisionChecker checker(problem.scene);
+  require_valid_endpoints(problem, checker);
+  return spec;
+}
+
+LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
   if (args.session.empty()) {
     args.session = default_session_file(problem);
     std::filesystem::create_directories("sessions");
@@ -113,33 +112,32 @@ int run_interactive(InteractiveArgs args) {
   options.digest_every_s = args.digest_every;
   options.stay = !args.headless && !args.exit_when_done;
   options.start_paused = args.paused;
-  LiveSession session(problem, spec, options);
-  std::cout << "tandem interactive: " << problem.name << ", " << to_string(spec.mode) << ", seed "
-            << spec.settings.seed << "; session journal " << args.session << '\n';
-  const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
-  if (!input.spacemouse_available)
-    std::cout << "  " << input.spacemouse_status << '\n';
-  std::optional<ViewerState> state;
-  std::optional<LiveControl> control;
-  std::optional<ViewerServer> server;
-  if (!args.headless) {
-    state.emplace(problem, std::string(to_string(spec.mode)), false);
-    control.emplace(session);
-    server.emplace(*state, *control, server_options(args.viewer));
-    session.set_observer(&*state);
-    std::cout << "  viewer: " << server->url() << "  (Ctrl-C ends the session)\n";
-  }
-  std::cout << std::flush;
+  return options;
+}
 
-  g_session.store(&session);
-  std::signal(SIGINT, on_session_signal);
-  std::signal(SIGTERM, on_session_signal);
-  bool announced_end = false;
-  const PlannerStatus status = session.run([&](const LiveProgress& p) {
+/// The viewer of a session: its state, the session's controls and the server, alive together.
+struct Viewer {
+  Viewer(const Problem& problem, LiveSession& session, const ViewerArgs& args)
+      : state(problem, session.spec().mode, false),
+        control(session),
+        server(state, control, server_options(args)) {
+    session.set_observer(&state);
+  }
+  ViewerState state;
+  LiveControl control;
+  ViewerServer server;
+};
+
+/// Prints progress each second; once the planner has ended, ends the session after --linger
+/// seconds without a browser.
+std::function<void(const LiveProgress&)> progress_printer(InteractiveArgs& args,
+                                                          LiveSession& session,
+                                                          const std::unique_ptr<Viewer>& viewer) {
+  auto announced_end = std::make_shared<bool>(false);
+  return [&args, &session, &viewer, announced_end](const LiveProgress& p) {
     if (p.status != PlannerStatus::running) {
-      // Nobody is watching: end a while after the planner did (--linger).
-      if (!announced_end) {
-        announced_end = true;
+      if (!*announced_end) {
+        *announced_end = true;
         std::cout << "  " << to_string(p.status) << " after " << p.stats.iterations
                   << " iterations, " << p.stats.nodes << " nodes; the viewer shows it until Ctrl-C"
                   << (args.linger ? " (or " + std::to_string(static_cast<int>(*args.linger)) +
@@ -148,7 +146,7 @@ int run_interactive(InteractiveArgs args) {
                   << '\n'
                   << std::flush;
       }
-      if (args.linger && server && server->connections() == 0) {
+      if (args.linger && viewer && viewer->server.connections() == 0) {
         *args.linger -= 1.0;
         if (*args.linger < 0.0)
           session.stop();
@@ -162,12 +160,11 @@ int run_interactive(InteractiveArgs args) {
               << p.stats.nodes << " nodes, " << p.stats.collision_checks
               << " collision checks; operator " << static_cast<long>(p.operator_rate_hz) << " Hz\n"
               << std::flush;
-  });
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  g_session.store(nullptr);
-  server.reset();
+  };
+}
 
+int finish_session(const InteractiveArgs& args, const Problem& problem, const LiveSession& session,
+                   PlannerStatus status) {
   const PlannerStats& stats = session.planner().stats();
   std::cout << to_string(status) << " after " << stats.iterations << " iterations, " << stats.nodes
             << " nodes (random " << stats.nodes_by_source[1] << ", operator "
@@ -178,6 +175,36 @@ int run_interactive(InteractiveArgs args) {
     std::cout << "path written to " << args.out << '\n';
   }
   return status == PlannerStatus::solved ? 0 : 1;
+}
+
+int run_interactive(InteractiveArgs args) {
+  if (!args.headless)
+    check_server_options(server_options(args.viewer));
+  const Problem problem = load_problem(args.run.problem);
+  const RunSpec spec = live_spec(args, problem);
+  LiveSession session(problem, spec, live_options(args, problem));
+  std::cout << "tandem interactive: " << problem.name << ", " << spec.mode << ", seed "
+            << spec.settings.seed << "; session journal " << args.session << '\n';
+  const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
+  if (!input.spacemouse_available)
+    std::cout << "  " << input.spacemouse_status << '\n';
+  std::unique_ptr<Viewer> viewer;
+  if (!args.headless) {
+    viewer = std::make_unique<Viewer>(problem, session, args.viewer);
+    std::cout << "  viewer: " << viewer->server.url() << "  (Ctrl-C ends the session)\n";
+  }
+  std::cout << std::flush;
+
+  g_session.store(&session);
+  std::signal(SIGINT, on_session_signal);
+  std::signal(SIGTERM, on_session_signal);
+  const PlannerStatus status = session.run(progress_printer(args, session, viewer));
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  g_session.store(nullptr);
+  session.set_observer(nullptr);
+  viewer.reset();
+  return finish_session(args, problem, session, status);
 }
 
 void add_session_options(CLI::App& app, InteractiveArgs& a) {
@@ -236,8 +263,6 @@ Command add_demo_command(CLI::App& app) {
   return [args] {
     args->run.problem.problem = "cluttered-1";
     args->run.mode = "interactive-contact";
-    if (!args->run.alpha)
-      args->run.alpha = 0.5;
     if (!args->linger)
       args->linger = 60.0;
     return run_interactive(*args);

@@ -13,11 +13,13 @@
 #include "run_options.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
-#include "tandem/experiments/run.hpp"
+#include "tandem/core/text.hpp"
+#include "tandem/io/json_codec.hpp"
 #include "tandem/io/path_file.hpp"
-#include "tandem/io/text.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/render/svg_render.hpp"
+#include "tandem/runs/run.hpp"
+#include "tandem/runs/run_record.hpp"
 
 namespace tandem::cli {
 namespace {
@@ -47,12 +49,99 @@ void require_writable(const std::string& file) {
   }
 }
 
-nlohmann::json sources_json(const PlannerStats& stats) {
-  nlohmann::json j;
-  for (std::size_t k = 0; k < kNodeSources; ++k) {
-    j[std::string(to_string(static_cast<NodeSource>(k)))] = stats.nodes_by_source[k];
+/// The path as written: simplified (unless asked not to), checked as it reads back from its file.
+struct PlannedPath {
+  Path path;
+  double simplify_time_s = 0.0;
+};
+
+PlannedPath finish_path(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
+                        const RunOutcome& run, MotionValidator& validator) {
+  PlannedPath out{run.path};
+  if (!args.no_simplify) {
+    const Stopwatch watch;
+    Rng rng(spec.settings.seed ^ 0x9e3779b97f4a7c15ULL);
+    out.path = simplify_path(std::move(out.path), validator, rng);
+    out.simplify_time_s = watch.seconds();
+  }
+  out.path = parse_path(format_path(out.path, problem.space), problem.space, "the planned path");
+  const PathCheck check = check_path(out.path, validator);
+  if (!check.valid)
+    throw std::logic_error("the planned path failed its own check: " + check.describe());
+  if (!args.out.empty())
+    write_path_file(args.out, out.path, problem.space);
+  return out;
+}
+
+/// The tunables the planner read, at top level, with the scene-scaled values resolved.
+void add_settings(nlohmann::json& j, const Problem& problem, const RunSpec& spec,
+                  const RunOutcome& run) {
+  for (const auto& [param, value] : used_tunables(spec))
+    j[std::string(param->name)] = param_json(value);
+  const InteractionSettings& i = spec.settings.interaction;
+  j["range"] = run.range;
+  if (j.contains("contact_distance"))
+    j["contact_distance"] = contact_distance(i, problem.space);
+  if (j.contains("contact_clearance"))
+    j["contact_clearance"] = contact_clearance(i, problem.space);
+  if (j.contains("sigma"))
+    j["sigma"] = sigma_translation(i, problem.space);
+}
+
+nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
+                         const RunOutcome& run, const PlannedPath& planned) {
+  const bool solved = run.status == PlannerStatus::solved;
+  std::map<std::string, ParamValue> given;
+  for (const auto& [param, value] : used_tunables(spec))
+    given[std::string(param->name)] = value;
+  nlohmann::json j = record_json(make_record(problem.name, spec.mode, given, spec.settings.seed,
+                                             spec.time_limit, run, solved));
+  j["source"] = problem.source;
+  j["mode"] = spec.mode;
+  add_settings(j, problem, spec, run);
+  j["path_length"] = solved ? nlohmann::json(path_length(problem.space, planned.path)) : nullptr;
+  j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nullptr;
+  j["path_states"] = planned.path.size();
+  j["simplify_time_s"] = planned.simplify_time_s;
+  j["out"] = solved && !args.out.empty() ? nlohmann::json(args.out) : nullptr;
+  if (uses_operator(spec)) {
+    j["operator"] = run.operator_description;
+    j["operator_seed"] = spec.operator_seed;
+    j["operator_time_s"] = run.stats.operator_time_s;
+    j["extensions"] = {{"collision", run.stats.extensions_collision},
+                       {"reached", run.stats.extensions_reached},
+                       {"obstacle", run.stats.extensions_obstacle}};
   }
   return j;
+}
+
+void print_summary(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
+                   const RunOutcome& run, const PlannedPath& planned) {
+  const PlannerStats& stats = run.stats;
+  const bool solved = run.status == PlannerStatus::solved;
+  std::cout << problem.name << ": "
+            << (solved ? "solved" : "not solved (" + std::string(to_string(run.status)) + ")")
+            << " by " << spec.mode << " in " << stats.time_s << " s, " << stats.iterations
+            << " iterations, " << stats.nodes << " nodes, " << stats.collision_checks
+            << " collision checks (seed " << spec.settings.seed << ")\n";
+  if (uses_operator(spec)) {
+    std::cout << "operator: " << run.operator_description << "; nodes from random samples "
+              << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::random)]
+              << ", operator "
+              << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::operator_)]
+              << ", contact "
+              << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::contact)] << '\n';
+  }
+  if (solved) {
+    std::cout << "path: " << planned.path.size() << " states, length "
+              << path_length(problem.space, planned.path) << " (before simplification "
+              << run.path_length << ")";
+    if (!args.out.empty())
+      std::cout << ", written to " << args.out;
+    std::cout << '\n';
+  }
+  if (!args.svg.empty())
+    std::cout << "picture: " << args.svg << '\n';
 }
 
 int run_plan(const PlanArgs& args) {
@@ -64,104 +153,16 @@ int run_plan(const PlanArgs& args) {
   CollisionChecker checker(problem.scene);
   require_valid_endpoints(problem, checker);
   const RunOutcome run = execute_run(problem, spec, checker);
-  const PlannerStats& stats = run.stats;
   const bool solved = run.status == PlannerStatus::solved;
-
   MotionValidator validator(problem.space, checker);
-  Path path;
-  double simplify_time = 0.0;
-  if (solved) {
-    path = run.path;
-    if (!args.no_simplify) {
-      const Stopwatch watch;
-      Rng rng(spec.settings.seed ^ 0x9e3779b97f4a7c15ULL);
-      path = simplify_path(std::move(path), validator, rng);
-      simplify_time = watch.seconds();
-    }
-    // What is written is what is checked: the path as it reads back from its file.
-    path = parse_path(format_path(path, problem.space), problem.space, "the planned path");
-    const PathCheck check = check_path(path, validator);
-    if (!check.valid) {
-      throw std::logic_error("the planned path failed its own check: " + check.describe());
-    }
-    if (!args.out.empty())
-      write_path_file(args.out, path, problem.space);
-  }
+  const PlannedPath planned =
+      solved ? finish_path(args, problem, spec, run, validator) : PlannedPath{};
   if (!args.svg.empty())
-    write_file_atomically(args.svg, render_svg(problem, path));
-
-  const std::string mode(to_string(spec.mode));
-  if (args.json) {
-    nlohmann::json j;
-    j["problem"] = problem.name;
-    j["source"] = problem.source;
-    j["mode"] = mode;
-    j["status"] = std::string(to_string(run.status));
-    j["solved"] = solved;
-    j["seed"] = spec.settings.seed;
-    j["range"] = run.range;
-    j["extend"] = std::string(to_string(spec.settings.extend));
-    j["time_limit_s"] = spec.time_limit;
-    j["time_s"] = stats.time_s;
-    j["iterations"] = stats.iterations;
-    j["nodes"] = stats.nodes;
-    j["edges"] = stats.edges;
-    j["nodes_by_source"] = sources_json(stats);
-    j["collision_checks"] = stats.collision_checks;
-    j["tree_digest"] = format_digest(run.tree_digest);
-    j["path_length"] =
-        solved ? nlohmann::json(path_length(problem.space, path)) : nlohmann::json(nullptr);
-    j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nlohmann::json(nullptr);
-    j["path_states"] = path.size();
-    j["simplify_time_s"] = simplify_time;
-    j["out"] = solved && !args.out.empty() ? nlohmann::json(args.out) : nlohmann::json(nullptr);
-    if (is_interactive(spec.mode)) {
-      const InteractionSettings& i = spec.settings.interaction;
-      j["operator"] = run.operator_description;
-      j["operator_seed"] = spec.operator_seed;
-      j["alpha"] = i.alpha;
-      j["operator_iterations"] = stats.operator_iterations;
-      j["operator_time_s"] = stats.operator_time_s;
-      j["operator_waits"] = run.operator_waits;
-      if (spec.mode == PlannerMode::interactive_contact) {
-        j["contact_samples"] = i.contact_samples;
-        j["contact_distance"] = contact_distance(i, problem.space);
-        j["contact_entries"] = stats.contact_entries;
-      }
-      if (spec.mode == PlannerMode::irrt) {
-        j["sampling"] = std::string(to_string(i.sampling));
-        j["sigma"] = sigma_translation(i, problem.space);
-        j["force_mix"] = i.force_mix;
-        j["extensions"] = {{"collision", stats.extensions_collision},
-                           {"reached", stats.extensions_reached},
-                           {"obstacle", stats.extensions_obstacle}};
-      }
-    }
-    std::cout << j.dump() << '\n';
-  } else {
-    std::cout << problem.name << ": "
-              << (solved ? "solved" : "not solved (" + std::string(to_string(run.status)) + ")")
-              << " by " << mode << " in " << stats.time_s << " s, " << stats.iterations
-              << " iterations, " << stats.nodes << " nodes, " << stats.collision_checks
-              << " collision checks (seed " << spec.settings.seed << ")\n";
-    if (is_interactive(spec.mode)) {
-      std::cout << "operator: " << run.operator_description << "; nodes from random samples "
-                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::random)]
-                << ", operator "
-                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::operator_)]
-                << ", contact "
-                << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::contact)] << '\n';
-    }
-    if (solved) {
-      std::cout << "path: " << path.size() << " states, length " << path_length(problem.space, path)
-                << " (before simplification " << run.path_length << ")";
-      if (!args.out.empty())
-        std::cout << ", written to " << args.out;
-      std::cout << '\n';
-    }
-    if (!args.svg.empty())
-      std::cout << "picture: " << args.svg << '\n';
-  }
+    write_file_atomically(args.svg, render_svg(problem, planned.path));
+  if (args.json)
+    std::cout << plan_json(args, problem, spec, run, planned).dump() << '\n';
+  else
+    print_summary(args, problem, spec, run, planned);
   return solved ? 0 : 1;
 }
 
@@ -177,13 +178,14 @@ Command add_plan_command(CLI::App& app) {
   app.add_flag("--no-simplify", args->no_simplify, "Keep the path as the planner found it");
   app.footer(
       "The path is simplified (shortcuts), checked as read back from its file, then written.\n"
-      "--json prints: problem, source, mode, status, solved, seed, range, extend, time_limit_s, "
-      "time_s,\niterations, nodes, edges, nodes_by_source (root, random, operator, contact), "
-      "collision_checks,\ntree_digest, path_length, raw_path_length, path_states, simplify_time_s, "
-      "out; in "
-      "interactive modes also operator,\noperator_seed, alpha, operator_iterations, "
-      "operator_waits, "
-      "operator_time_s and the mode's own figures.\nExit 0 if solved; 1 if not solved within the "
+      "--json prints a run record (as tandem bench records it: problem, config, params, seed,\n"
+      "time_limit_s, status, solved, path_valid, time_s, iterations, nodes, edges, "
+      "collision_checks,"
+      "\nnodes_by_source, operator_iterations, contact_entries, operator_waits, tree_digest) and\n"
+      "source, mode, every tunable the planner read (scene-scaled values resolved), path_length,\n"
+      "raw_path_length, path_states, simplify_time_s, out; with an operator also operator,\n"
+      "operator_seed, operator_time_s and the extensions' outcomes.\nExit 0 if solved; 1 if not "
+      "solved within the "
       "time limit; 2 for bad input (including a start or\ngoal outside the bounds or in "
       "collision).");
   return [args] { return run_plan(*args); };

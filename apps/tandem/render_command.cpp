@@ -4,8 +4,8 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/io/path_file.hpp"
-#include "tandem/io/text.hpp"
 #include "tandem/render/svg_render.hpp"
 
 namespace tandem::cli {

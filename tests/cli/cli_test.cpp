@@ -141,7 +141,7 @@ TEST(Cli, UnknownOptionsAndNonsensicalValues) {
   expect_bad_input({"plan", "cluttered-1", "--frobnicate"}, {"--frobnicate"});
   expect_bad_input({"plan", "cluttered-1", "--time-limit", "-1"}, {"--time-limit"});
   expect_bad_input({"plan", "cluttered-1", "--time-limit", "soon"}, {"--time-limit"});
-  expect_bad_input({"plan", "cluttered-1", "--range", "0"}, {"--range"});
+  expect_bad_input({"plan", "cluttered-1", "--range", "-1"}, {"--range"});
   expect_bad_input({"plan", "cluttered-1", "--seed", "-3"}, {"--seed"});
   expect_bad_input({"plan", "cluttered-1", "--planner", "prm"}, {"--planner"});
   expect_bad_input({"plan", "cluttered-1", "--goal-bias", "2"}, {"--goal-bias"});
@@ -237,7 +237,19 @@ keyframes = [{ position = [-2, 0, 0] }, { position = [0, 0.1, 0] }, { position =
 TEST(Cli, HumanLoopOptionsRejectNonsense) {
   TempDir dir;
   const auto no_guide = dir.write("w.toml", kWallScenario).string();
-  expect_bad_input({"plan", "cluttered-1", "--alpha", "0.3"}, {"--alpha", "interactive mode"});
+  expect_bad_input({"plan", "cluttered-1", "--alpha", "0.3"},
+                   {"--alpha", "planner 'birrt' does not use alpha"});
+  expect_bad_input({"plan", "cluttered-1", "--operator", "inexperienced"},
+                   {"--operator", "planner 'birrt' does not use operator"});
+  for (const char* nonsense : {"nan", "inf", "-inf", "0.5x", ""}) {
+    expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--alpha", nonsense},
+                     {"--alpha: must be a number in [0, 1], not"});
+  }
+  expect_bad_input(
+      {"plan", "cluttered-1", "--mode", "interactive-contact", "--contact-samples", "2.5"},
+      {"--contact-samples: must be a whole number in [1, 100000], not 2.5"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "irrt", "--sampling", "wide"},
+                   {"--sampling: must be one of mag, path, mag+cs, path+cs, not 'wide'"});
   expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--alpha", "1.5"}, {"--alpha"});
   expect_bad_input({"plan", "cluttered-1", "--mode", "teleport"}, {"--mode"});
   expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--operator", "clumsy"},
@@ -305,7 +317,8 @@ mode = ["birrt", "interactive"]
 
   expect_bad_input({"bench", (dir.path() / "none.toml").string()}, {"none.toml"});
   const auto bad = dir.write("bad.toml", "name = \"b\"\nproblem = \"g.toml\"\n[base]\nalpha = 7\n");
-  expect_bad_input({"bench", bad.string(), "--out", out}, {"bad.toml:3", "alpha"});
+  expect_bad_input({"bench", bad.string(), "--out", out},
+                   {"bad.toml:4", "alpha must be a number in [0, 1], not 7"});
   expect_bad_input(
       {"bench", experiment.string(), "--out", (dir.path() / "fresh").string(), "--report-only"},
       {"runs.jsonl", "run the experiment first"});
@@ -375,7 +388,7 @@ TEST(Cli, InteractiveAndReplayRejectBadInput) {
       {"--host", "not an IP address"});
   expect_bad_input({"interactive", "cluttered-1", "--port", "70000"}, {"--port"});
   expect_bad_input({"interactive", "cluttered-1", "--headless", "--mode", "birrt"},
-                   {"--mode", "interactive mode"});
+                   {"--mode", "a live session needs a planner that takes an operator"});
   expect_bad_input({"replay", (dir.path() / "none.jsonl").string()}, {"none.jsonl"});
   const auto junk = dir.write("junk.jsonl", "{\"journal\":\"tandem session\",\"version\":9}\n");
   expect_bad_input({"replay", junk.string()}, {"junk.jsonl", "version 9"});

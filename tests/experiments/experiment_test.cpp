@@ -10,11 +10,11 @@
 
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/experiments/bench_runner.hpp"
 #include "tandem/experiments/ompl_log.hpp"
 #include "tandem/experiments/report.hpp"
 #include "tandem/experiments/statistics.hpp"
-#include "tandem/io/text.hpp"
 
 namespace tandem {
 namespace {
@@ -61,7 +61,8 @@ columns = ["alpha"]
             "interactive-contact alpha=0.8 contact_samples=1 operator=inexperienced");
   EXPECT_EQ(x.configs[6].label(), "birrt operator=inexperienced");
   const RunSpec s = x.configs[5].spec(3, 12.5);
-  EXPECT_EQ(s.mode, PlannerMode::interactive_contact);
+  EXPECT_EQ(s.mode, "interactive-contact");
+  EXPECT_TRUE(s.settings.interaction.contact);
   EXPECT_DOUBLE_EQ(s.settings.interaction.alpha, 0.2);
   EXPECT_EQ(s.settings.interaction.contact_samples, 10);
   EXPECT_EQ(s.operator_name, "inexperienced");
@@ -87,16 +88,19 @@ TEST(ExperimentFile, FaultsNameTheFileAndLine) {
     std::string text, expected;
   };
   const Case cases[] = {
-      {"problem = \"p\"\n", "x.toml: the experiment needs 'name'"},
+      {"problem = \"p\"\n", "x.toml:1: the experiment needs 'name'"},
       {head + "colour = 3\n", "x.toml:3: unknown key 'colour'"},
-      {head + "[base]\nalfa = 0.5\n", "x.toml:4: unknown run parameter 'alfa'"},
-      {head + "[base]\nalpha = \"high\"\n", "x.toml:4: alpha must be a number"},
+      {head + "[base]\nalfa = 0.5\n", "x.toml:4: unknown parameter 'alfa' (known: range, "},
+      {head + "[base]\nalpha = \"high\"\n",
+       "x.toml:4: alpha must be a number in [0, 1], not 'high'"},
       {head + "[[sweep]]\nalpha = [0.5, 1.5]\n",
-       "x.toml:3: configuration alpha=1.5: alpha: must be in [0, 1]"},
+       "x.toml:4: alpha must be a number in [0, 1], not 1.5"},
       {head + "[[sweep]]\nalpha = []\n", "x.toml:4: alpha has no values"},
-      {head + "[[sweep]]\nmode = \"fast\"\n", "unknown mode 'fast'"},
+      {head + "[[sweep]]\nmode = \"fast\"\n", "x.toml:4: unknown mode 'fast' (known: birrt, "},
       {head + "[[sweep]]\ncontact_samples = -2\n",
-       "x.toml:4: contact_samples must be a non-negative"},
+       "x.toml:4: contact_samples must be a whole number in [1, 100000], not -2"},
+      {head + "[[sweep]]\ncontact_samples = 2.5\n",
+       "x.toml:4: contact_samples must be a whole number in [1, 100000], not 2.5"},
       {head + "seeds = 0\n", "x.toml:3: seeds must be a positive integer"},
       {head + "time_limit = -1\n", "x.toml:3: time_limit must be a positive number"},
       {"name = \"../evil\"\nproblem = \"p\"\n", "x.toml:1: name may hold"},

@@ -12,6 +12,7 @@
 #include "tandem/operators/guide_follower.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
@@ -62,8 +63,8 @@ TEST(InteractiveBiRRT, AtAlphaOneIsExactlyBiRRT) {
 
   VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source()));
   const Interaction interaction{&feed};
-  auto interactive =
-      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto interactive = make_planner("interactive", f.validator, f.problem.start, f.problem.goal,
+                                  settings, &interaction);
   ASSERT_EQ(interactive->solve(Termination{}), PlannerStatus::solved);
   EXPECT_EQ(all_nodes(*plain), all_nodes(*interactive));
   EXPECT_EQ(plain->solution(), interactive->solution());
@@ -78,8 +79,8 @@ TEST(InteractiveBiRRT, TheOperatorAloneGrowsTheTreeAlongTheGuide) {
   const auto source = f.operator_source();
   VirtualTimeFeed feed(OperatorModel(f.checker, source));
   const Interaction interaction{&feed};
-  auto planner =
-      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal, settings,
+                              &interaction);
   Termination t;
   t.max_iterations = 200000;
   ASSERT_EQ(planner->solve(t), PlannerStatus::solved);
@@ -114,8 +115,8 @@ TEST(InteractiveBiRRT, SameSeedSameOperatorSameTree) {
     settings.interaction.contact = true;
     VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source("inexperienced", 3)));
     const Interaction interaction{&feed};
-    auto planner =
-        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal,
+                                settings, &interaction);
     Termination t;
     t.max_iterations = 3000;
     planner->solve(t);
@@ -142,8 +143,8 @@ TEST(InteractiveBiRRT, ContactSamplingSlidesOnTheObstacle) {
       2);
   VirtualTimeFeed feed(OperatorModel(f.checker, source));
   const Interaction interaction{&feed};
-  auto planner =
-      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal, settings,
+                              &interaction);
   Termination t;
   t.max_iterations = 6000;
   planner->solve(t);
@@ -173,8 +174,8 @@ TEST(InteractiveBiRRT, ParametersChangeWhilePlanning) {
   InteractionParameters parameters(operator_only);
   VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source()));
   const Interaction interaction{&feed, &parameters};
-  auto planner =
-      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal, settings,
+                              &interaction);
   Termination t;
   t.max_iterations = 300;
   planner->solve(t);
@@ -212,8 +213,8 @@ TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     LiveFeed feed(channel);
     const Interaction interaction{&feed};
-    auto planner =
-        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal,
+                                settings, &interaction);
     Termination t;
     t.max_iterations = 4000;
     planner->solve(t);
@@ -225,8 +226,8 @@ TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
   ASSERT_FALSE(record.empty());
   ReplayFeed replay(record);
   const Interaction interaction{&replay};
-  auto planner =
-      make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal, settings,
+                              &interaction);
   Termination t;
   t.max_iterations = 4000;
   planner->solve(t);
@@ -307,8 +308,8 @@ TEST(InteractiveBiRRT, TheSimulatedOperatorWatchesTheRoadmap) {
     settings.seed = 5;
     settings.extend = ExtendMode::last_valid;
     settings.interaction.alpha = 0.0;
-    auto planner =
-        make_planner("birrt", f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+    auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal,
+                                settings, &interaction);
     double d = 0.0;
     while (planner->step() == PlannerStatus::running && planner->stats().iterations < 20000) {
       // What the planner will see next (the same roadmap, so the same state).

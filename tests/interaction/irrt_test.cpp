@@ -7,6 +7,7 @@
 #include "support/test_support.hpp"
 #include "tandem/operators/guide_follower.hpp"
 #include "tandem/planning/path.hpp"
+#include "tandem/planning/planner_registry.hpp"
 #include "tandem/sampling/gaussian_shooter.hpp"
 
 namespace tandem {
@@ -151,7 +152,7 @@ TEST(IRRT, TheGuidanceForcePullsTheUserTowardTheTree) {
   VirtualTimeFeed feed(OperatorModel(f.checker, source));
   LatestValue<Guidance> guidance;
   const Interaction interaction{&feed, nullptr, &guidance};
-  IRRT planner(f.validator, f.problem.start, f.problem.goal, settings, &interaction);
+  IRRT planner(f.validator, f.problem.start, f.problem.goal, settings, interaction);
   Termination t;
   t.max_iterations = 20000;
   planner.solve(t);

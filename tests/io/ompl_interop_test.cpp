@@ -11,9 +11,10 @@
 #include <ompl/util/Console.h>
 
 #include "support/test_support.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/io/path_file.hpp"
-#include "tandem/io/text.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 #include "tandem/scene/problem_loader.hpp"
 
 namespace tandem {

@@ -4,6 +4,7 @@
 
 #include "support/test_support.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {

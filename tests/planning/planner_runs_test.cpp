@@ -6,6 +6,7 @@
 #include "support/test_support.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 #include "tandem/scene/problem_loader.hpp"
 

@@ -9,6 +9,7 @@
 #include "support/test_support.hpp"
 #include "tandem/planning/extend.hpp"
 #include "tandem/planning/path.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "support/test_support.hpp"
-#include "tandem/experiments/run.hpp"
+#include "tandem/runs/run.hpp"
 #include "tandem/scene/problem_loader.hpp"
 
 namespace tandem {
@@ -35,28 +35,23 @@ struct Golden {
 
 std::string row(const Golden& g, const RunOutcome& o) {
   char buf[400];
-  std::snprintf(buf, sizeof buf,
-                "{\"%s\", \"%s\", %llu, %llu, \"%s\", %llu, %zu, %zu, %zu, %zu, %llu, 0x%016llxULL},",
-                g.problem, g.mode, static_cast<unsigned long long>(g.seed),
-                static_cast<unsigned long long>(g.max_iterations),
-                std::string(to_string(o.status)).c_str(),
-                static_cast<unsigned long long>(o.stats.iterations), o.stats.nodes,
-                o.stats.nodes_by_source[1], o.stats.nodes_by_source[2], o.stats.nodes_by_source[3],
-                static_cast<unsigned long long>(o.stats.collision_checks),
-                static_cast<unsigned long long>(o.tree_digest));
+  std::snprintf(
+      buf, sizeof buf,
+      "{\"%s\", \"%s\", %llu, %llu, \"%s\", %llu, %zu, %zu, %zu, %zu, %llu, 0x%016llxULL},",
+      g.problem, g.mode, static_cast<unsigned long long>(g.seed),
+      static_cast<unsigned long long>(g.max_iterations), std::string(to_string(o.status)).c_str(),
+      static_cast<unsigned long long>(o.stats.iterations), o.stats.nodes,
+      o.stats.nodes_by_source[1], o.stats.nodes_by_source[2], o.stats.nodes_by_source[3],
+      static_cast<unsigned long long>(o.stats.collision_checks),
+      static_cast<unsigned long long>(o.tree_digest));
   return buf;
 }
 
 RunOutcome run(const Golden& g, const Problem& problem) {
-  RunSpec spec;
-  spec.mode = *parse_planner_mode(g.mode);
+  // As `tandem plan PROBLEM --mode MODE --seed SEED` makes it.
+  RunSpec spec = default_spec(g.mode, problem.hints);
   spec.settings.seed = g.seed;
   spec.operator_seed = g.seed;
-  const std::string range_key = spec.mode == PlannerMode::rrt ? "rrt" : "birrt";
-  if (auto it = problem.hints.range.find(range_key); it != problem.hints.range.end())
-    spec.settings.range = it->second;
-  spec.settings.extend = *parse_extend_mode(problem.hints.extend.value_or("classic"));
-  spec.settings.interaction.alpha = is_interactive(spec.mode) ? 0.5 : 1.0;
   spec.time_limit = 1e9;
   spec.max_iterations = g.max_iterations;
   return execute_run(problem, spec);

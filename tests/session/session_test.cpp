@@ -9,7 +9,7 @@
 
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/session/live_session.hpp"
 #include "tandem/session/replay.hpp"
 
@@ -30,8 +30,7 @@ Problem detour_problem() {
 }
 
 RunSpec live_spec(std::uint64_t seed) {
-  RunSpec spec;
-  spec.mode = PlannerMode::interactive_contact;
+  RunSpec spec = default_spec("interactive-contact", {});
   spec.settings.seed = seed;
   spec.settings.extend = ExtendMode::last_valid;
   spec.settings.interaction.alpha = 0.3;

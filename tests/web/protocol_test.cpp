@@ -11,6 +11,7 @@
 
 #include "support/test_support.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/planning/planner_registry.hpp"
 #include "tandem/web/viewer_state.hpp"
 
 namespace tandem {
@@ -40,7 +41,8 @@ TEST(Protocol, RefusesEveryMalformedOrHostileMessage) {
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[0,0,0,0,0,0,1],\"id\":-1}"),
               HasSubstr("non-negative"));
   EXPECT_THAT(refusal("{\"type\":\"params\"}"), HasSubstr("no parameter"));
-  EXPECT_THAT(refusal("{\"type\":\"params\",\"alpha\":7}"), HasSubstr("alpha must be in [0"));
+  EXPECT_THAT(refusal("{\"type\":\"params\",\"alpha\":7}"),
+              HasSubstr("alpha must be a number in [0, 1], not 7"));
   EXPECT_THAT(refusal("{\"type\":\"params\",\"contact\":1}"), HasSubstr("true or false"));
   EXPECT_THAT(refusal("{\"type\":\"params\",\"contact_samples\":0}"), HasSubstr("contact_samples"));
   EXPECT_THAT(refusal("{\"type\":\"params\",\"sampling\":\"x\"}"), HasSubstr("sampling"));

@@ -14,7 +14,7 @@
 #include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/planning/path.hpp"
 
 namespace tandem {
@@ -109,33 +109,6 @@ class Recorder {
   Stopwatch watch_;
 };
 
-RunRecord make_record(const Problem& problem, const RunConfig& config, std::uint64_t seed,
-                      double time_limit, const RunOutcome& outcome, bool path_valid) {
-  RunRecord r;
-  r.problem = problem.name;
-  r.config = config.label();
-  for (const auto& [k, v] : config.values)
-    r.params[k] = format_param(v);
-  r.seed = seed;
-  r.time_limit_s = time_limit;
-  r.status = std::string(to_string(outcome.status));
-  r.solved = outcome.status == PlannerStatus::solved;
-  r.path_valid = path_valid;
-  const PlannerStats& s = outcome.stats;
-  r.time_s = s.time_s;
-  r.iterations = s.iterations;
-  r.nodes = s.nodes;
-  r.edges = s.edges;
-  r.collision_checks = s.collision_checks;
-  r.nodes_by_source = s.nodes_by_source;
-  r.path_length = outcome.path_length;
-  r.operator_iterations = s.operator_iterations;
-  r.contact_entries = s.contact_entries;
-  r.operator_waits = outcome.operator_waits;
-  r.tree_digest = format_digest(outcome.tree_digest);
-  return r;
-}
-
 /// Keeps the complete lines of a runs file and rewrites it without a torn last line, so that
 /// appending goes on from a clean end.
 std::vector<RunRecord> load_and_repair(const std::filesystem::path& file, std::ostream* log) {
@@ -168,72 +141,170 @@ std::vector<RunRecord> load_and_repair(const std::filesystem::path& file, std::o
   return records;
 }
 
-}  // namespace
-
-std::string RunRecord::param(const std::string& name) const {
-  auto it = params.find(name);
-  return it == params.end() ? std::string() : it->second;
-}
-
-std::string format_record(const RunRecord& r) {
-  nlohmann::json j;
-  j["problem"] = r.problem;
-  j["config"] = r.config;
-  j["params"] = r.params;
-  j["seed"] = r.seed;
-  j["time_limit_s"] = r.time_limit_s;
-  j["status"] = r.status;
-  j["solved"] = r.solved;
-  j["path_valid"] = r.path_valid;
-  j["time_s"] = r.time_s;
-  j["iterations"] = r.iterations;
-  j["nodes"] = r.nodes;
-  j["edges"] = r.edges;
-  j["collision_checks"] = r.collision_checks;
-  nlohmann::json sources;
-  for (std::size_t k = 0; k < kNodeSources; ++k)
-    sources[std::string(to_string(static_cast<NodeSource>(k)))] = r.nodes_by_source[k];
-  j["nodes_by_source"] = sources;
-  j["path_length"] = r.path_length;
-  j["operator_iterations"] = r.operator_iterations;
-  j["contact_entries"] = r.contact_entries;
-  j["operator_waits"] = r.operator_waits;
-  j["tree_digest"] = r.tree_digest;
-  return j.dump();
-}
-
-std::optional<RunRecord> parse_record(const std::string& line) {
-  try {
-    const nlohmann::json j = nlohmann::json::parse(line);
-    RunRecord r;
-    r.problem = j.at("problem").get<std::string>();
-    r.config = j.at("config").get<std::string>();
-    r.params = j.at("params").get<std::map<std::string, std::string>>();
-    r.seed = j.at("seed").get<std::uint64_t>();
-    r.time_limit_s = j.at("time_limit_s").get<double>();
-    r.status = j.at("status").get<std::string>();
-    r.solved = j.at("solved").get<bool>();
-    r.path_valid = j.at("path_valid").get<bool>();
-    r.time_s = j.at("time_s").get<double>();
-    r.iterations = j.at("iterations").get<std::uint64_t>();
-    r.nodes = j.at("nodes").get<std::size_t>();
-    r.edges = j.at("edges").get<std::size_t>();
-    r.collision_checks = j.at("collision_checks").get<std::uint64_t>();
-    for (std::size_t k = 0; k < kNodeSources; ++k) {
-      r.nodes_by_source[k] = j.at("nodes_by_source")
-                                 .at(std::string(to_string(static_cast<NodeSource>(k))))
-                                 .get<std::size_t>();
+/// Every configuration must be runnable before any run starts (an unknown operator, a missing
+/// guide or trace): an error now, not after an hour.
+void check_runnable(const Experiment& experiment, const Problem& problem) {
+  for (const RunConfig& c : experiment.configs) {
+    const RunSpec spec = c.spec(experiment.seed_start, experiment.time_limit, problem.hints);
+    if (uses_operator(spec)) {
+      try {
+        (void)make_operator(problem, spec);
+      } catch (const InputError& e) {
+        throw InputError(experiment.name, "configuration " + c.label() + ": " + e.what());
+      }
     }
-    r.path_length = j.at("path_length").get<double>();
-    r.operator_iterations = j.at("operator_iterations").get<std::uint64_t>();
-    r.contact_entries = j.at("contact_entries").get<std::uint64_t>();
-    r.operator_waits = j.value("operator_waits", std::uint64_t{0});
-    r.tree_digest = j.at("tree_digest").get<std::string>();
-    return r;
-  } catch (const nlohmann::json::exception&) {
-    return std::nullopt;
   }
 }
+
+/// Creates the output folder and reads the runs already in its runs file (OUT/runs.jsonl), which
+/// must be of this problem and time limit.
+std::vector<RunRecord> open_output(const std::filesystem::path& out_dir, const Problem& problem,
+                                   double time_limit, std::ostream* log) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir))
+    throw InputError(out_dir.string(), "cannot be created as a folder");
+  const std::filesystem::path runs_file = out_dir / kRunsFile;
+  std::vector<RunRecord> previous = load_and_repair(runs_file, log);
+  for (const RunRecord& r : previous) {
+    if (r.problem != problem.name || r.time_limit_s != time_limit) {
+      std::ostringstream msg;
+      msg << "holds runs of problem '" << r.problem << "' with a time limit of " << r.time_limit_s
+          << " s; this experiment runs '" << problem.name << "' with " << time_limit
+          << " s. Use another --out folder, or delete this one to start again";
+      throw InputError(runs_file.string(), msg.str());
+    }
+  }
+  return previous;
+}
+
+/// Records by key (configuration and seed); a later record of a key replaces an earlier one.
+void index_records(std::vector<RunRecord>&& records, std::map<std::string, RunRecord>& done) {
+  for (RunRecord& r : records) {
+    std::string key = r.key();
+    done.insert_or_assign(std::move(key), std::move(r));
+  }
+}
+
+/// The runs not done yet, seed-major: an interrupted experiment has every configuration for its
+/// first seeds. Counts the planned and the resumed runs into `result`.
+std::vector<Job> plan_jobs(const Experiment& experiment, std::uint64_t seeds,
+                           const std::map<std::string, RunRecord>& done, BenchResult& result) {
+  std::vector<Job> jobs;
+  for (std::uint64_t s = 0; s < seeds; ++s) {
+    for (std::size_t c = 0; c < experiment.configs.size(); ++c) {
+      const std::uint64_t seed = experiment.seed_start + s;
+      ++result.planned;
+      if (done.count(experiment.configs[c].label() + " #" + std::to_string(seed)) != 0) {
+        ++result.resumed;
+      } else {
+        jobs.push_back({c, seed});
+      }
+    }
+  }
+  return jobs;
+}
+
+/// The jobs and what the workers share: the next job, the first error, the stop flags.
+///
+/// Threading: work() runs on every worker thread; each owns its collision checker, motion
+/// validator and planner, the problem is shared read-only and finished runs go to the Recorder.
+/// The first exception stops the other workers between runs (and their planners through
+/// stop_all_, unless the caller's stop flag is used) and is rethrown by rethrow() after the join.
+class JobQueue {
+ public:
+  JobQueue(const Experiment& experiment, const Problem& problem, const BenchOptions& options,
+           std::vector<Job> jobs, Recorder& recorder)
+      : experiment_(experiment),
+        problem_(problem),
+        options_(options),
+        jobs_(std::move(jobs)),
+        recorder_(recorder) {}
+
+  /// Runs the jobs on options.jobs threads (at most one a job) and waits for them.
+  void run_all() {
+    if (jobs_.empty())
+      return;
+    const unsigned n_workers =
+        std::max(1u, std::min<unsigned>(options_.jobs, static_cast<unsigned>(jobs_.size())));
+    std::vector<std::thread> threads;
+    for (unsigned w = 0; w < n_workers; ++w)
+      threads.emplace_back([this] { work(); });
+    for (auto& t : threads)
+      t.join();
+  }
+
+  void rethrow() const {
+    if (error_)
+      std::rethrow_exception(error_);
+  }
+
+ private:
+  bool stopping() const {
+    return failed_.load() || (options_.stop != nullptr && options_.stop->load());
+  }
+
+  void work() {
+    try {
+      CollisionChecker checker(problem_.scene);
+      MotionValidator validator(problem_.space, checker);
+      for (std::size_t i = next_++; i < jobs_.size() && !stopping(); i = next_++) {
+        if (!run_one(jobs_[i], checker, validator))
+          break;
+      }
+    } catch (...) {
+      const std::lock_guard lock(error_mutex_);
+      if (!error_)
+        error_ = std::current_exception();
+      failed_ = true;
+      stop_all_ = true;
+    }
+  }
+
+  /// Runs and records one job; false when its planner was interrupted (not recorded).
+  bool run_one(const Job& job, CollisionChecker& checker, MotionValidator& validator) {
+    const RunConfig& config = experiment_.configs[job.config];
+    const double time_limit = experiment_.time_limit;
+    RunSpec spec = config.spec(job.seed, time_limit, problem_.hints);
+    // The planner stops on Ctrl-C; a failure of another worker stops this one between runs.
+    spec.stop = options_.stop != nullptr ? options_.stop : &stop_all_;
+    const RunOutcome outcome = execute_run(problem_, spec, checker);
+    if (outcome.status == PlannerStatus::interrupted)
+      return false;
+    const bool valid = outcome.status == PlannerStatus::solved && !outcome.path.empty() &&
+                       check_path(outcome.path, validator).valid;
+    recorder_.record(make_record(problem_.name, config.label(), config.values, job.seed, time_limit,
+                                 outcome, valid));
+    return true;
+  }
+
+  const Experiment& experiment_;
+  const Problem& problem_;
+  const BenchOptions& options_;
+  const std::vector<Job> jobs_;
+  Recorder& recorder_;
+  std::atomic<std::size_t> next_{0};
+  std::mutex error_mutex_;
+  std::exception_ptr error_;
+  std::atomic<bool> failed_{false};
+  std::atomic<bool> stop_all_{false};
+};
+
+/// The experiment's recorded runs, in configuration order, then seed order.
+std::vector<RunRecord> ordered_records(const Experiment& experiment, std::uint64_t seeds,
+                                       const std::map<std::string, RunRecord>& done) {
+  std::vector<RunRecord> records;
+  for (const RunConfig& c : experiment.configs) {
+    for (std::uint64_t s = 0; s < seeds; ++s) {
+      auto it = done.find(c.label() + " #" + std::to_string(experiment.seed_start + s));
+      if (it != done.end())
+        records.push_back(it->second);
+    }
+  }
+  return records;
+}
+
+}  // namespace
 
 std::vector<RunRecord> read_records(const std::filesystem::path& runs_file) {
   std::vector<RunRecord> records;
@@ -252,122 +323,28 @@ BenchResult run_experiment(const Experiment& experiment, const Problem& problem,
                            const BenchOptions& options) {
   const Stopwatch wall;
   const std::uint64_t seeds = options.seeds.value_or(experiment.seeds);
-  const double time_limit = experiment.time_limit;
-
-  // Every configuration must be runnable before any run starts (an unknown operator, a missing
-  // guide or trace): an error now, not after an hour.
-  for (const RunConfig& c : experiment.configs) {
-    const RunSpec spec = c.spec(experiment.seed_start, time_limit, problem.hints);
-    if (is_interactive(spec.mode)) {
-      try {
-        (void)make_operator(problem, spec);
-      } catch (const InputError& e) {
-        throw InputError(experiment.name, "configuration " + c.label() + ": " + e.what());
-      }
-    }
-  }
-
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(options.out_dir)) {
-    throw InputError(options.out_dir.string(), "cannot be created as a folder");
-  }
+  check_runnable(experiment, problem);
   const std::filesystem::path runs_file = options.out_dir / kRunsFile;
-  std::vector<RunRecord> previous = load_and_repair(runs_file, options.progress);
-  for (const RunRecord& r : previous) {
-    if (r.problem != problem.name || r.time_limit_s != time_limit) {
-      std::ostringstream msg;
-      msg << "holds runs of problem '" << r.problem << "' with a time limit of " << r.time_limit_s
-          << " s; this experiment runs '" << problem.name << "' with " << time_limit
-          << " s. Use another --out folder, or delete this one to start again";
-      throw InputError(runs_file.string(), msg.str());
-    }
-  }
-
   std::map<std::string, RunRecord> done;
-  for (RunRecord& r : previous) {
-    std::string key = r.key();
-    done.insert_or_assign(std::move(key), std::move(r));
-  }
-  // Seed-major order: an interrupted experiment has every configuration for its first seeds.
-  std::vector<Job> jobs;
-  BenchResult result;
-  for (std::uint64_t s = 0; s < seeds; ++s) {
-    for (std::size_t c = 0; c < experiment.configs.size(); ++c) {
-      const std::uint64_t seed = experiment.seed_start + s;
-      ++result.planned;
-      if (done.count(experiment.configs[c].label() + " #" + std::to_string(seed)) != 0) {
-        ++result.resumed;
-      } else {
-        jobs.push_back({c, seed});
-      }
-    }
-  }
+  index_records(open_output(options.out_dir, problem, experiment.time_limit, options.progress),
+                done);
 
+  BenchResult result;
+  std::vector<Job> jobs = plan_jobs(experiment, seeds, done, result);
   Recorder recorder(runs_file, options, result.planned, result.resumed);
   if (options.progress != nullptr && result.resumed > 0) {
     *options.progress << runs_file.string() << ": " << result.resumed << " of " << result.planned
                       << " runs already done; running the other " << jobs.size() << '\n';
   }
-  std::atomic<std::size_t> next{0};
-  std::mutex error_mutex;
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  std::atomic<bool> stop_all{false};
-  auto stopping = [&] {
-    return failed.load() || (options.stop != nullptr && options.stop->load());
-  };
-  auto worker = [&] {
-    try {
-      CollisionChecker checker(problem.scene);
-      MotionValidator validator(problem.space, checker);
-      for (std::size_t i = next++; i < jobs.size() && !stopping(); i = next++) {
-        const Job& job = jobs[i];
-        const RunConfig& config = experiment.configs[job.config];
-        RunSpec spec = config.spec(job.seed, time_limit, problem.hints);
-        // The planner stops on Ctrl-C; a failure of another worker stops this one between runs.
-        spec.stop = options.stop != nullptr ? options.stop : &stop_all;
-        const RunOutcome outcome = execute_run(problem, spec, checker);
-        if (outcome.status == PlannerStatus::interrupted)
-          break;
-        const bool valid = outcome.status == PlannerStatus::solved && !outcome.path.empty() &&
-                           check_path(outcome.path, validator).valid;
-        recorder.record(make_record(problem, config, job.seed, time_limit, outcome, valid));
-      }
-    } catch (...) {
-      const std::lock_guard lock(error_mutex);
-      if (!error)
-        error = std::current_exception();
-      failed = true;
-      stop_all = true;
-    }
-  };
-  const unsigned n_workers =
-      std::max(1u, std::min<unsigned>(options.jobs, static_cast<unsigned>(jobs.size())));
-  std::vector<std::thread> threads;
-  if (!jobs.empty()) {
-    for (unsigned w = 0; w < n_workers; ++w)
-      threads.emplace_back(worker);
-    for (auto& t : threads)
-      t.join();
-  }
+  JobQueue queue(experiment, problem, options, std::move(jobs), recorder);
+  queue.run_all();
   recorder.draw(true);
-  if (error)
-    std::rethrow_exception(error);
+  queue.rethrow();
 
   result.ran = recorder.ran();
   result.interrupted = options.stop != nullptr && options.stop->load();
-  for (RunRecord& r : recorder.take()) {
-    std::string key = r.key();
-    done.insert_or_assign(std::move(key), std::move(r));
-  }
-  for (const RunConfig& c : experiment.configs) {
-    for (std::uint64_t s = 0; s < seeds; ++s) {
-      auto it = done.find(c.label() + " #" + std::to_string(experiment.seed_start + s));
-      if (it != done.end())
-        result.records.push_back(it->second);
-    }
-  }
+  index_records(recorder.take(), done);
+  result.records = ordered_records(experiment, seeds, done);
   result.wall_s = wall.seconds();
   return result;
 }

@@ -23,7 +23,9 @@
 //   panels = "sigma"                 # a parameter that makes separate tables and plots (optional)
 //   paper = { "0.8" = "40 s, 1729 nodes" }   # optional: the paper's figures, quoted beside ours
 //
-// Unknown keys, wrong types and values out of range are errors naming the file and line.
+// The keys of [base] and [[sweep]] are "mode" (a planner of the registry) and the tunables the
+// tables declare (run_tunables()), with the same ranges as everywhere. Unknown keys, wrong types
+// and values out of range are errors naming the file and line.
 
 #include <filesystem>
 #include <map>
@@ -31,14 +33,10 @@
 #include <variant>
 #include <vector>
 
-#include "tandem/experiments/run.hpp"
+#include "tandem/runs/run.hpp"
 #include "tandem/scene/problem.hpp"
 
 namespace tandem {
-
-/// One value of a run parameter.
-using ParamValue = std::variant<double, std::int64_t, std::string>;
-std::string format_param(const ParamValue& v);
 
 /// The parameters of one configuration, by name, in a fixed order (std::map), and what they set.
 struct RunConfig {
@@ -54,8 +52,8 @@ struct RunConfig {
   std::string value_text(const std::string& name) const;
 };
 
-/// Parameter names an experiment may set, and the kind of value each takes.
-const std::map<std::string, std::string>& run_parameter_kinds();
+/// Whether an experiment may set `name`: "mode" or a tunable of run_tunables().
+bool is_run_parameter(std::string_view name);
 
 struct ReportSpec {
   std::string title;

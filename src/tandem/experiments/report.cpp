@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 
 namespace tandem {
 namespace {
@@ -185,13 +185,25 @@ std::string x_value(const RunConfig& c, const Layout& l) {
   return v.empty() ? "—" : v;
 }
 
-}  // namespace
+/// Where a plot's parts go: the plot area within the picture, the y axis's decades (10^l0 to
+/// 10^l1, logarithmic) and the x axis's evenly spaced labels.
+struct PlotFrame {
+  static constexpr double W = 780, H = 400, left = 70, right = 300, top = 40, bottom = 60;
+  static constexpr double pw = W - left - right, ph = H - top - bottom;
+  double l0 = 0.0, l1 = 1.0;
+  std::size_t labels = 0;
 
-std::string svg_plot(const std::string& title, const std::string& x_title,
-                     const std::string& y_title, const std::vector<std::string>& x_labels,
-                     const std::vector<PlotSeries>& series) {
-  constexpr double W = 780, H = 400, left = 70, right = 300, top = 40, bottom = 60;
-  const double pw = W - left - right, ph = H - top - bottom;
+  double y(double v) const {
+    return top + ph * (1.0 - (std::log10(std::max(v, std::pow(10.0, l0))) - l0) / (l1 - l0));
+  }
+  double x(std::size_t i) const {
+    return left +
+           (labels <= 1 ? pw / 2 : pw * static_cast<double>(i) / static_cast<double>(labels - 1));
+  }
+};
+
+/// The frame whose decades hold every positive value and interval of the series.
+PlotFrame plot_frame(const std::vector<PlotSeries>& series, std::size_t labels) {
   double lo = INFINITY, hi = -INFINITY;
   for (const auto& s : series) {
     for (const auto& p : s.points) {
@@ -205,35 +217,33 @@ std::string svg_plot(const std::string& title, const std::string& x_title,
     lo = 1.0;
     hi = 10.0;
   }
-  double l0 = std::floor(std::log10(lo)), l1 = std::ceil(std::log10(hi));
-  if (l1 <= l0)
-    l1 = l0 + 1;
-  auto y = [&](double v) {
-    return top + ph * (1.0 - (std::log10(std::max(v, std::pow(10.0, l0))) - l0) / (l1 - l0));
-  };
-  auto x = [&](std::size_t i) {
-    return left + (x_labels.size() <= 1
-                       ? pw / 2
-                       : pw * static_cast<double>(i) / static_cast<double>(x_labels.size() - 1));
-  };
-  static const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
-                                   "#9467bd", "#8c564b", "#e377c2", "#17becf"};
-  std::ostringstream o;
-  o.setf(std::ios::fixed);
-  o.precision(1);
+  PlotFrame f;
+  f.l0 = std::floor(std::log10(lo));
+  f.l1 = std::ceil(std::log10(hi));
+  if (f.l1 <= f.l0)
+    f.l1 = f.l0 + 1;
+  f.labels = labels;
+  return f;
+}
+
+/// The picture's background, title, grid, axis labels and plot area.
+void draw_axes(std::ostream& o, const PlotFrame& f, const std::string& title,
+               const std::string& x_title, const std::string& y_title,
+               const std::vector<std::string>& x_labels) {
+  const double W = f.W, H = f.H, left = f.left, top = f.top, pw = f.pw, ph = f.ph;
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" "
        "fill=\"white\"/>\n";
   o << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">" << xml(title)
     << "</text>\n";
-  for (double e = l0; e <= l1 + 1e-9; e += 1.0) {
+  for (double e = f.l0; e <= f.l1 + 1e-9; e += 1.0) {
     const double v = std::pow(10.0, e);
-    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << y(v) << "\" y2=\""
-      << y(v) << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << y(v) + 4
+    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << f.y(v) << "\" y2=\""
+      << f.y(v) << "\" stroke=\"#ddd\"/>\n<text x=\"" << left - 6 << "\" y=\"" << f.y(v) + 4
       << "\" text-anchor=\"end\">" << number(v, 6) << "</text>\n";
   }
   for (std::size_t i = 0; i < x_labels.size(); ++i) {
-    o << "<text x=\"" << x(i) << "\" y=\"" << top + ph + 18 << "\" text-anchor=\"middle\">"
+    o << "<text x=\"" << f.x(i) << "\" y=\"" << top + ph + 18 << "\" text-anchor=\"middle\">"
       << xml(x_labels[i]) << "</text>\n";
   }
   o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
@@ -241,43 +251,43 @@ std::string svg_plot(const std::string& title, const std::string& x_title,
   o << "<text x=\"" << left + pw / 2 << "\" y=\"" << H - 15 << "\" text-anchor=\"middle\">"
     << xml(x_title) << "</text>\n<text transform=\"translate(18 " << top + ph / 2
     << ") rotate(-90)\" text-anchor=\"middle\">" << xml(y_title) << " (log scale)</text>\n";
-  for (std::size_t s = 0; s < series.size(); ++s) {
-    const char* colour = kColours[s % std::size(kColours)];
-    std::string poly;
-    for (std::size_t i = 0; i < series[s].points.size() && i < x_labels.size(); ++i) {
-      const Interval& p = series[s].points[i];
-      if (p.value <= 0.0)
-        continue;
-      const double dx =
-          (static_cast<double>(s) - static_cast<double>(series.size() - 1) / 2.0) * 4.0;
-      if (p.has_interval) {
-        o << "<line x1=\"" << x(i) + dx << "\" x2=\"" << x(i) + dx << "\" y1=\"" << y(p.low)
-          << "\" y2=\"" << y(p.high) << "\" stroke=\"" << colour << "\"/>\n";
-      }
-      o << "<circle cx=\"" << x(i) + dx << "\" cy=\"" << y(p.value) << "\" r=\"3\" fill=\""
-        << colour << "\"/>\n";
-      std::ostringstream pt;
-      pt.setf(std::ios::fixed);
-      pt.precision(1);
-      pt << x(i) + dx << ',' << y(p.value) << ' ';
-      poly += pt.str();
-    }
-    o << "<polyline points=\"" << poly << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
-    o << "<rect x=\"" << left + pw + 12 << "\" y=\"" << top + 18.0 * static_cast<double>(s)
-      << "\" width=\"10\" height=\"10\" fill=\"" << colour << "\"/>\n<text x=\"" << left + pw + 26
-      << "\" y=\"" << top + 9 + 18.0 * static_cast<double>(s) << "\">" << xml(series[s].name)
-      << "</text>\n";
-  }
-  o << "</svg>\n";
-  return o.str();
 }
 
-std::string format_report(const Experiment& x, const Problem& problem,
-                          const std::vector<RunRecord>& records, const std::string& command,
-                          const std::vector<std::string>& plot_files) {
-  const Grouped g(x, records);
-  const Layout& l = g.layout;
+/// Series number s of `count`: its points, whiskers, line and legend entry, nudged sideways so
+/// that series at the same x stay apart.
+void draw_series(std::ostream& o, const PlotFrame& f, const PlotSeries& series, std::size_t s,
+                 std::size_t count) {
+  static const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
+                                   "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  const char* colour = kColours[s % std::size(kColours)];
+  std::string poly;
+  for (std::size_t i = 0; i < series.points.size() && i < f.labels; ++i) {
+    const Interval& p = series.points[i];
+    if (p.value <= 0.0)
+      continue;
+    const double dx = (static_cast<double>(s) - static_cast<double>(count - 1) / 2.0) * 4.0;
+    if (p.has_interval) {
+      o << "<line x1=\"" << f.x(i) + dx << "\" x2=\"" << f.x(i) + dx << "\" y1=\"" << f.y(p.low)
+        << "\" y2=\"" << f.y(p.high) << "\" stroke=\"" << colour << "\"/>\n";
+    }
+    o << "<circle cx=\"" << f.x(i) + dx << "\" cy=\"" << f.y(p.value) << "\" r=\"3\" fill=\""
+      << colour << "\"/>\n";
+    std::ostringstream pt;
+    pt.setf(std::ios::fixed);
+    pt.precision(1);
+    pt << f.x(i) + dx << ',' << f.y(p.value) << ' ';
+    poly += pt.str();
+  }
+  const double legend_x = f.left + f.pw, row = 18.0 * static_cast<double>(s);
+  o << "<polyline points=\"" << poly << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
+  o << "<rect x=\"" << legend_x + 12 << "\" y=\"" << f.top + row
+    << "\" width=\"10\" height=\"10\" fill=\"" << colour << "\"/>\n<text x=\"" << legend_x + 26
+    << "\" y=\"" << f.top + 9 + row << "\">" << xml(series.name) << "</text>\n";
+}
 
+/// The report's opening: what was run, how much, and how to read the tables.
+void write_introduction(std::ostream& o, const Experiment& x, const Problem& problem,
+                        const std::vector<RunRecord>& records, const std::string& command) {
   std::size_t solved = 0, valid = 0;
   std::set<std::uint64_t> seeds;
   for (const RunRecord& r : records) {
@@ -285,7 +295,6 @@ std::string format_report(const Experiment& x, const Problem& problem,
     valid += r.path_valid ? 1 : 0;
     seeds.insert(r.seed);
   }
-  std::ostringstream o;
   o << "# " << x.report.title << "\n\n";
   if (!x.description.empty())
     o << x.description << "\n\n";
@@ -300,52 +309,83 @@ std::string format_report(const Experiment& x, const Problem& problem,
        "median time marked > is such a run. Solved: share of runs, with its 95% Wilson interval. "
        "Every solution was checked state by state and motion by motion (check-path): "
     << valid << " of " << solved << " valid.\n\n";
+}
 
-  const bool quote_paper = !x.report.paper.empty();
+/// A table's heading and alignment lines.
+void write_table_head(std::ostream& o, const Layout& l, bool quote_paper) {
+  o << '|';
+  for (const std::string& n : l.varying) {
+    if (n != l.panels)
+      o << ' ' << n << " |";
+  }
+  o << " solved | time s | nodes | edges | collision checks | nodes random / operator / contact "
+       "|";
+  if (quote_paper)
+    o << " paper |";
+  o << "\n|";
+  for (const std::string& n : l.varying) {
+    if (n != l.panels)
+      o << " --- |";
+  }
+  o << " ---: | ---: | ---: | ---: | ---: | ---: |" << (quote_paper ? " --- |" : "") << '\n';
+}
+
+/// A configuration's row of a table.
+void write_table_row(std::ostream& o, const Experiment& x, const Layout& l, const RunConfig& c,
+                     const Summary& s) {
+  o << '|';
+  for (const std::string& n : l.varying) {
+    if (n != l.panels)
+      o << ' ' << (c.value_text(n).empty() ? "—" : c.value_text(n)) << " |";
+  }
+  char share[64];
+  std::snprintf(share, sizeof share, "%.0f%% / %.0f%% / %.0f%%",
+                100 * s.share[static_cast<std::size_t>(NodeSource::random)],
+                100 * s.share[static_cast<std::size_t>(NodeSource::operator_)],
+                100 * s.share[static_cast<std::size_t>(NodeSource::contact)]);
+  char solved_text[96];
+  std::snprintf(solved_text, sizeof solved_text, "%zu/%zu (%.0f–%.0f%%)", s.solved, s.runs,
+                100 * s.success.low, 100 * s.success.high);
+  o << ' ' << solved_text << " | " << (s.time_censored ? "> " : "") << with_interval(s.time, false)
+    << " | " << with_interval(s.nodes, true) << " | " << number(std::round(s.edges.value), 6)
+    << " | " << number(std::round(s.checks.value), 6) << " | " << share << " |";
+  if (!x.report.paper.empty()) {
+    auto p = x.report.paper.find(l.rows.empty() ? "" : c.value_text(l.rows));
+    o << ' ' << (p == x.report.paper.end() ? "" : p->second) << " |";
+  }
+  o << '\n';
+}
+
+}  // namespace
+
+std::string svg_plot(const std::string& title, const std::string& x_title,
+                     const std::string& y_title, const std::vector<std::string>& x_labels,
+                     const std::vector<PlotSeries>& series) {
+  const PlotFrame f = plot_frame(series, x_labels.size());
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(1);
+  draw_axes(o, f, title, x_title, y_title, x_labels);
+  for (std::size_t s = 0; s < series.size(); ++s)
+    draw_series(o, f, series[s], s, series.size());
+  o << "</svg>\n";
+  return o.str();
+}
+
+std::string format_report(const Experiment& x, const Problem& problem,
+                          const std::vector<RunRecord>& records, const std::string& command,
+                          const std::vector<std::string>& plot_files) {
+  const Grouped g(x, records);
+  const Layout& l = g.layout;
+  std::ostringstream o;
+  write_introduction(o, x, problem, records, command);
   std::size_t plot = 0;
   for (const std::string& panel : g.panels) {
     if (!l.panels.empty())
       o << "## " << l.panels << " = " << panel << "\n\n";
-    o << '|';
-    for (const std::string& n : l.varying) {
-      if (n != l.panels)
-        o << ' ' << n << " |";
-    }
-    o << " solved | time s | nodes | edges | collision checks | nodes random / operator / contact "
-         "|";
-    if (quote_paper)
-      o << " paper |";
-    o << "\n|";
-    for (const std::string& n : l.varying) {
-      if (n != l.panels)
-        o << " --- |";
-    }
-    o << " ---: | ---: | ---: | ---: | ---: | ---: |" << (quote_paper ? " --- |" : "") << '\n';
-    for (const auto& [config, s] : g.rows(x, panel)) {
-      const RunConfig& c = *config;
-      o << '|';
-      for (const std::string& n : l.varying) {
-        if (n != l.panels)
-          o << ' ' << (c.value_text(n).empty() ? "—" : c.value_text(n)) << " |";
-      }
-      char share[64];
-      std::snprintf(share, sizeof share, "%.0f%% / %.0f%% / %.0f%%",
-                    100 * s.share[static_cast<std::size_t>(NodeSource::random)],
-                    100 * s.share[static_cast<std::size_t>(NodeSource::operator_)],
-                    100 * s.share[static_cast<std::size_t>(NodeSource::contact)]);
-      char solved_text[96];
-      std::snprintf(solved_text, sizeof solved_text, "%zu/%zu (%.0f–%.0f%%)", s.solved, s.runs,
-                    100 * s.success.low, 100 * s.success.high);
-      o << ' ' << solved_text << " | " << (s.time_censored ? "> " : "")
-        << with_interval(s.time, false) << " | " << with_interval(s.nodes, true) << " | "
-        << number(std::round(s.edges.value), 6) << " | " << number(std::round(s.checks.value), 6)
-        << " | " << share << " |";
-      if (quote_paper) {
-        auto p = x.report.paper.find(l.rows.empty() ? "" : c.value_text(l.rows));
-        o << ' ' << (p == x.report.paper.end() ? "" : p->second) << " |";
-      }
-      o << '\n';
-    }
+    write_table_head(o, l, !x.report.paper.empty());
+    for (const auto& [config, s] : g.rows(x, panel))
+      write_table_row(o, x, l, *config, s);
     o << '\n';
     for (int k = 0; k < 2 && plot < plot_files.size(); ++k, ++plot)
       o << "![" << (k == 0 ? "time" : "nodes") << "](" << plot_files[plot] << ") ";

@@ -12,8 +12,8 @@
 #include <memory>
 
 #include "tandem/collision/collision_checker.hpp"
+#include "tandem/interaction/operator_source.hpp"
 #include "tandem/interaction/operator_state.hpp"
-#include "tandem/operators/operator_source.hpp"
 
 namespace tandem {
 

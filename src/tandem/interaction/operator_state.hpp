@@ -13,11 +13,9 @@
 #include "tandem/collision/collision_checker.hpp"
 #include "tandem/interaction/contact_frame.hpp"
 #include "tandem/space/config.hpp"
+#include "tandem/space/twist.hpp"
 
 namespace tandem {
-
-/// Linear (first three) and angular (last three, world frame) velocity, per unit of operator time.
-using Twist = Eigen::Matrix<double, 6, 1>;
 
 /// What a device (or a simulated operator) gives at one instant.
 struct DeviceReading {

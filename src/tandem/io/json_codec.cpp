@@ -1,39 +1,55 @@
 #include "tandem/io/json_codec.hpp"
 
-#include <stdexcept>
+#include <cmath>
 
 namespace tandem {
 
 using nlohmann::json;
 
+json param_json(const ParamValue& value) {
+  return std::visit([](const auto& v) { return json(v); }, value);
+}
+
+ParamValue param_from_json(const json& j) {
+  if (j.is_number_integer())
+    return j.get<std::int64_t>();
+  if (j.is_number())
+    return j.get<double>();
+  if (j.is_boolean())
+    return j.get<bool>();
+  if (j.is_string())
+    return j.get<std::string>();
+  return std::string("<") + j.type_name() + ">";
+}
+
+json param_spec_json(const ParamSpec& spec, const ParamValue& default_value) {
+  json j{
+      {"name", spec.name}, {"symbol", spec.symbol},        {"label", spec.label},
+      {"unit", spec.unit}, {"kind", to_string(spec.kind)}, {"default", param_json(default_value)},
+      {"help", spec.help}};
+  if (spec.kind == ParamKind::real || spec.kind == ParamKind::integer) {
+    j["min"] = std::isfinite(spec.min) ? json(spec.min) : json(nullptr);
+    j["max"] = std::isfinite(spec.max) ? json(spec.max) : json(nullptr);
+    j["min_open"] = spec.min_open;
+  }
+  if (spec.kind == ParamKind::choice)
+    j["choices"] = spec.choices;
+  return j;
+}
+
 json interaction_json(const InteractionSettings& i) {
-  return json{{"alpha", i.alpha},
-              {"contact", i.contact},
-              {"contact_samples", i.contact_samples},
-              {"contact_distance", i.contact_distance},
-              {"contact_clearance", i.contact_clearance},
-              {"sampling", std::string(to_string(i.sampling))},
-              {"force_mix", i.force_mix},
-              {"neighbours", i.neighbours},
-              {"sigma", i.sigma},
-              {"uniform_every", i.uniform_every}};
+  return settings_json(interaction_parameters(), i);
 }
 
 InteractionSettings interaction_from_json(const json& j) {
   InteractionSettings i;
-  i.alpha = j.at("alpha").get<double>();
-  i.contact = j.at("contact").get<bool>();
-  i.contact_samples = j.at("contact_samples").get<int>();
-  i.contact_distance = j.at("contact_distance").get<double>();
-  i.contact_clearance = j.at("contact_clearance").get<double>();
-  const auto sampling = parse_irrt_sampling(j.at("sampling").get<std::string>());
-  if (!sampling)
-    throw std::invalid_argument("unknown sampling mode");
-  i.sampling = *sampling;
-  i.force_mix = j.at("force_mix").get<double>();
-  i.neighbours = j.at("neighbours").get<int>();
-  i.sigma = j.at("sigma").get<double>();
-  i.uniform_every = j.at("uniform_every").get<int>();
+  for (const auto& p : interaction_parameters()) {
+    const std::string name(p.spec.name);
+    const ParamValue v = param_from_json(j.at(name));
+    if (auto fault = param_fault(p.spec, v))
+      throw std::invalid_argument(name + " " + *fault);
+    p.set(i, normalise_param(p.spec, v));
+  }
   return i;
 }
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "tandem/core/rng.hpp"
+#include "tandem/interaction/operator_source.hpp"
 #include "tandem/operators/operator_profile.hpp"
-#include "tandem/operators/operator_source.hpp"
 
 namespace tandem {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 
 namespace tandem {
 

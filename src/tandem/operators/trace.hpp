@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "tandem/interaction/operator_source.hpp"
 #include "tandem/operators/operator_profile.hpp"
-#include "tandem/operators/operator_source.hpp"
 
 namespace tandem {
 

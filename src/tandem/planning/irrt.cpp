@@ -14,12 +14,13 @@ constexpr std::size_t kMotionWindow = 20;  ///< user positions over which F_u is
 }  // namespace
 
 IRRT::IRRT(MotionValidator& validator, const Config& start, const Config& goal,
-           const PlannerSettings& settings, const Interaction* interaction)
-    : Planner(validator, start, goal, settings, interaction),
+           const PlannerSettings& settings, const Interaction& interaction)
+    : Planner(validator, start, goal, settings),
+      interaction_(interaction),
       tree_(validator.space(), settings.nearest_neighbors, start),
       shot_rng_(settings.seed ^ 0x3c3c3c3c9e3779b9ULL) {
-  if (interaction == nullptr)
-    throw std::invalid_argument("the I-RRT needs an operator (an Interaction)");
+  if (interaction.feed == nullptr)
+    throw std::invalid_argument("the I-RRT needs an operator (an OperatorFeed)");
   attach(tree_);
   labels_.push_back({space_.distance(start, goal)});
 }
@@ -92,22 +93,11 @@ Config IRRT::shoot(const Config& q_user, const InteractionSettings& s, NodeSourc
   return gaussian_shot(space_, centre, f_r_, sigma_t, sigma_r, shot_rng_);
 }
 
-bool IRRT::iterate() {
-  const InteractionSettings& s = interaction_settings();
-  const OperatorState* op = interaction_.feed->at(stats().iterations, this);
-  NodeSource source = NodeSource::random;
-  bool toward_goal = false;
-  Config q_rand;
-  if (op == nullptr) {
-    q_rand = space_.sample_uniform(rng_);
-  } else {
-    ++operator_iterations_;
-    update_user(*op);
-    update_forces(op->device.q_device, s);
-    q_rand = shoot(op->device.q_device, s, source, toward_goal);
-  }
-  const Extension e = extend(tree_, q_rand, range_, validator_, settings_.extend, source);
-  count_extension(e.status);
+SamplerStats IRRT::sampler_stats() const {
+  return {interaction_.feed->operator_seconds(), operator_iterations_, 0};
+}
+
+void IRRT::update_labels(const Extension& e) {
   if (e.added) {
     labels_.push_back({space_.distance(tree_.nodes[e.node], goal_)});
   }
@@ -120,6 +110,28 @@ bool IRRT::iterate() {
   }
   near.collision_label = static_cast<double>(near.collisions) / (near.extensions + 1.0) *
                          std::max(0.0, 1.0 - near.covered / (near.extensions * range_));
+}
+
+bool IRRT::iterate() {
+  const InteractionSettings& s = interaction_.parameters != nullptr
+                                     ? interaction_.parameters->latest()
+                                     : settings_.interaction;
+  const OperatorState* op = interaction_.feed->at(stats().iterations, this);
+  NodeSource source = NodeSource::random;
+  bool toward_goal = false;
+  Config q_rand;
+  if (op == nullptr) {
+    q_rand = space_.sample_uniform(rng_);
+  } else {
+    ++operator_iterations_;
+    update_user(*op);
+    update_forces(op->device.q_device, s);
+    q_rand = shoot(op->device.q_device, s, source, toward_goal);
+  }
+  // 4. EXTEND.
+  const Extension e = extend(tree_, q_rand, range_, validator_, settings_.extend, source);
+  count_extension(e.status);
+  update_labels(e);
   if (!(toward_goal && e.status == ExtendStatus::reached))
     return false;
   solution_ = tree_.path_from_root(e.node);

@@ -4,9 +4,6 @@
 
 #include "tandem/core/digest.hpp"
 #include "tandem/core/stopwatch.hpp"
-#include "tandem/planning/irrt.hpp"
-#include "tandem/planning/rrt.hpp"
-#include "tandem/planning/rrt_connect.hpp"
 
 namespace tandem {
 
@@ -30,23 +27,6 @@ std::string_view to_string(PlannerStatus status) {
   return "unknown";
 }
 
-std::string_view to_string(ExtendMode mode) {
-  return mode == ExtendMode::last_valid ? "last-valid" : "classic";
-}
-
-std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
-  if (name == "classic")
-    return ExtendMode::classic;
-  if (name == "last-valid")
-    return ExtendMode::last_valid;
-  return std::nullopt;
-}
-
-std::string_view to_string(NodeSource source) {
-  static constexpr std::string_view kNames[] = {"root", "random", "operator", "contact"};
-  return kNames[static_cast<std::size_t>(source)];
-}
-
 std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
   Digest d;
   for (const Tree* tree : trees) {
@@ -60,32 +40,8 @@ std::uint64_t tree_digest(const std::vector<const Tree*>& trees) {
   return d.value();
 }
 
-std::string_view to_string(IrrtSampling mode) {
-  static constexpr std::string_view kNames[] = {"mag", "path", "mag+cs", "path+cs"};
-  return kNames[static_cast<std::size_t>(mode)];
-}
-
-std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name) {
-  for (auto m :
-       {IrrtSampling::mag, IrrtSampling::path, IrrtSampling::mag_cs, IrrtSampling::path_cs}) {
-    if (to_string(m) == name)
-      return m;
-  }
-  return std::nullopt;
-}
-
-double contact_distance(const InteractionSettings& s, const SE3Space& space) {
-  return s.contact_distance > 0.0 ? s.contact_distance : 0.015 * space.translation_extent();
-}
-double contact_clearance(const InteractionSettings& s, const SE3Space& space) {
-  return s.contact_clearance > 0.0 ? s.contact_clearance : 0.1 * space.translation_step();
-}
-double sigma_translation(const InteractionSettings& s, const SE3Space& space) {
-  return s.sigma > 0.0 ? s.sigma : 0.02 * space.translation_extent();
-}
-
 Planner::Planner(MotionValidator& validator, const Config& start, const Config& goal,
-                 const PlannerSettings& settings, const Interaction* interaction)
+                 const PlannerSettings& settings)
     : validator_(validator),
       space_(validator.space()),
       start_(start),
@@ -93,19 +49,9 @@ Planner::Planner(MotionValidator& validator, const Config& start, const Config& 
       settings_(settings),
       range_(settings.range > 0.0 ? settings.range : validator.space().default_range()),
       rng_(settings.seed) {
-  if (interaction != nullptr) {
-    if (interaction->feed == nullptr)
-      throw std::invalid_argument("an Interaction needs an OperatorFeed");
-    interaction_ = *interaction;
-  }
   if (!(settings.goal_bias >= 0.0 && settings.goal_bias <= 1.0)) {
     throw std::invalid_argument("goal_bias must be in [0, 1]");
   }
-}
-
-const InteractionSettings& Planner::interaction_settings() {
-  return interaction_.parameters != nullptr ? interaction_.parameters->latest()
-                                            : settings_.interaction;
 }
 
 void Planner::update_counts() {
@@ -118,10 +64,10 @@ void Planner::update_counts() {
     for (std::size_t s = 0; s < kNodeSources; ++s)
       stats_.nodes_by_source[s] += t->by_source[s];
   }
-  stats_.operator_time_s =
-      interaction_.feed != nullptr ? interaction_.feed->operator_seconds() : 0.0;
-  stats_.operator_iterations = operator_iterations_;
-  stats_.contact_entries = contact_entries_;
+  const SamplerStats sampler = sampler_stats();
+  stats_.operator_time_s = sampler.operator_time_s;
+  stats_.operator_iterations = sampler.operator_iterations;
+  stats_.contact_entries = sampler.contact_entries;
   stats_.extensions_collision =
       extension_outcomes_[static_cast<std::size_t>(ExtendStatus::trapped)];
   stats_.extensions_reached = extension_outcomes_[static_cast<std::size_t>(ExtendStatus::reached)];
@@ -194,24 +140,6 @@ PlannerStatus Planner::solve(const Termination& termination) {
   }
   stats_.time_s = time_before + watch.seconds();
   return status_;
-}
-
-std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
-                                      const Config& start, const Config& goal,
-                                      const PlannerSettings& settings,
-                                      const Interaction* interaction) {
-  if (name == "birrt" || name == "rrtconnect")
-    return std::make_unique<RRTConnect>(validator, start, goal, settings, interaction);
-  if (name == "irrt")
-    return std::make_unique<IRRT>(validator, start, goal, settings, interaction);
-  if (name == "rrt")
-    return std::make_unique<RRT>(validator, start, goal, settings);
-  throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
-}
-
-const std::vector<std::string>& planner_names() {
-  static const std::vector<std::string> kNames = {"birrt", "rrt", "irrt"};
-  return kNames;
 }
 
 }  // namespace tandem

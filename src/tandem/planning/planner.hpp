@@ -23,8 +23,9 @@
 #include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/rng.hpp"
 #include "tandem/planning/extend_status.hpp"
-#include "tandem/planning/interaction.hpp"
+#include "tandem/planning/planner_settings.hpp"
 #include "tandem/planning/tree.hpp"
+#include "tandem/sampling/target_sampler.hpp"
 
 namespace tandem {
 
@@ -39,35 +40,6 @@ enum class PlannerStatus : std::uint8_t {
 };
 
 std::string_view to_string(PlannerStatus status);
-
-/// How a tree grows toward a target it cannot reach in one collision-free motion.
-enum class ExtendMode : std::uint8_t {
-  classic,     ///< Kuffner & LaValle 2000: the whole step is valid or nothing is added (OMPL's
-               ///< RRTConnect)
-  last_valid,  ///< the papers' Add_Tree: the last valid configuration along the motion is added
-};
-
-/// "classic" or "last-valid" (the names the command line and scenario files use).
-std::string_view to_string(ExtendMode mode);
-std::optional<ExtendMode> parse_extend_mode(std::string_view name);
-
-/// Settings of the automatic planners, with their defaults. Declared once; the CLI, the benchmark
-/// and (later) the viewer read them from here.
-struct PlannerSettings {
-  /// Longest motion added in one extension; <= 0 means 0.2 x the space's maximum extent (OMPL).
-  double range = 0.0;
-  /// RRT only: probability of extending toward the goal, in [0, 1].
-  double goal_bias = 0.05;
-  /// The run's only source of randomness.
-  std::uint64_t seed = 1;
-  ExtendMode extend = ExtendMode::classic;
-  /// "kdtree" or "linear".
-  std::string nearest_neighbors = "kdtree";
-  /// Measure the time spent in collision checks and nearest-neighbour queries.
-  bool profile = false;
-  /// The interactive planners' tunables (used when the planner is given an Interaction).
-  InteractionSettings interaction;
-};
 
 struct PlannerStats {
   double time_s = 0.0;                 ///< wall time spent in solve()
@@ -100,10 +72,13 @@ struct Termination {
   const std::atomic<bool>* stop = nullptr;
 };
 
+/// Base of the tree planners: the step / solve / interrupt cycle, statistics, the start and goal
+/// checks. It knows nothing of operators: interactive planners take a TargetSampler (RRT,
+/// RRT-Connect) or an Interaction (the I-RRT) of their own.
 class Planner : public RoadmapView {
  public:
   Planner(MotionValidator& validator, const Config& start, const Config& goal,
-          const PlannerSettings& settings, const Interaction* interaction = nullptr);
+          const PlannerSettings& settings);
   virtual ~Planner() = default;
   Planner(const Planner&) = delete;
   Planner& operator=(const Planner&) = delete;
@@ -140,13 +115,11 @@ class Planner : public RoadmapView {
   void attach(Tree& tree);
   /// Counts an extension toward an iteration's target in the statistics.
   void count_extension(ExtendStatus status);
-
-  /// The interaction settings in force this iteration (live, if the Interaction has parameters).
-  const InteractionSettings& interaction_settings();
+  /// What a variant counts of its own (a sampler's operator counters); called by update_counts().
+  virtual SamplerStats sampler_stats() const { return {}; }
 
   MotionValidator& validator_;
   const SE3Space& space_;
-  Interaction interaction_;  ///< feed == nullptr: not interactive
   Config start_, goal_;
   PlannerSettings settings_;
   double range_;
@@ -161,25 +134,7 @@ class Planner : public RoadmapView {
   double nearest_seconds_ = 0.0;
   PlannerStats stats_;
   std::atomic<bool> interrupt_requested_{false};
-
- protected:
-  /// Interactive planners count these; update_counts() publishes them in stats().
-  std::uint64_t operator_iterations_ = 0;
-  std::uint64_t contact_entries_ = 0;
-
- private:
   std::array<std::uint64_t, 4> extension_outcomes_{};
 };
-
-/// "birrt" (RRT-Connect) or "rrt". Throws std::invalid_argument for an unknown name.
-/// With an Interaction, "birrt" becomes the interactive BiRRT (authority sharing, and contact
-/// sampling if enabled) and "irrt" is available (it needs one).
-std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
-                                      const Config& start, const Config& goal,
-                                      const PlannerSettings& settings,
-                                      const Interaction* interaction = nullptr);
-
-/// Names make_planner() accepts.
-const std::vector<std::string>& planner_names();
 
 }  // namespace tandem

@@ -5,21 +5,34 @@
 namespace tandem {
 
 RRT::RRT(MotionValidator& validator, const Config& start, const Config& goal,
-         const PlannerSettings& settings)
+         const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler)
     : Planner(validator, start, goal, settings),
-      tree_(validator.space(), settings.nearest_neighbors, start) {
+      tree_(validator.space(), settings.nearest_neighbors, start),
+      sampler_(sampler != nullptr ? std::move(sampler)
+                                  : std::make_unique<UniformSampler>(validator.space())) {
   attach(tree_);
 }
 
 bool RRT::iterate() {
+  // 1. The goal, or the sampler's targets.
   const bool toward_goal = rng_.uniform01() < settings_.goal_bias;
-  const Config q_rand = toward_goal ? goal_ : space_.sample_uniform(rng_);
-  const Extension ext = extend(tree_, q_rand, range_, validator_, settings_.extend);
-  count_extension(ext.status);
-  if (ext.status != ExtendStatus::reached || !toward_goal)
-    return false;
-  solution_ = tree_.path_from_root(ext.node);
-  return true;
+  targets_.clear();
+  if (toward_goal)
+    targets_.push_back({goal_, NodeSource::random});
+  else
+    sampler_->sample({stats().iterations, this, &rng_}, targets_);
+  for (const Target& target : targets_) {
+    // 2. EXTEND.
+    const Extension ext =
+        extend(tree_, target.q, range_, validator_, settings_.extend, target.source);
+    count_extension(ext.status);
+    // 3. Solved when the goal is reached.
+    if (toward_goal && ext.status == ExtendStatus::reached) {
+      solution_ = tree_.path_from_root(ext.node);
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace tandem

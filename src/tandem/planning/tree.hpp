@@ -13,15 +13,9 @@
 #include "tandem/core/digest.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/nn/nearest_neighbors.hpp"
+#include "tandem/sampling/target_sampler.hpp"
 
 namespace tandem {
-
-/// Where a node's target came from: the tree's root, a uniform sample, the operator (q_device, or a
-/// sample around it), or contact sampling. Nodes added while connecting carry the source of the
-/// node they connect to.
-enum class NodeSource : std::uint8_t { root, random, operator_, contact };
-inline constexpr std::size_t kNodeSources = 4;
-std::string_view to_string(NodeSource source);
 
 struct Tree {
   static constexpr NodeId kNoParent = UINT32_MAX;

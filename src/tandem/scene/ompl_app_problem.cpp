@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 
 namespace tandem {
@@ -112,15 +112,8 @@ std::filesystem::path mesh_path(const std::filesystem::path& cfg, const std::str
   return p.is_absolute() ? p : cfg.parent_path() / p;
 }
 
-}  // namespace
-
-Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
-  const std::string name = cfg_file.string();
-  const Ini ini = read_ini(cfg_file);
-  auto section = ini.find("problem");
-  if (section == ini.end())
-    throw InputError(name, "no [problem] section");
-
+/// Throws at the first key of [problem] OMPL.app does not read.
+void reject_unknown_keys(const std::string& name, const std::map<std::string, IniValue>& section) {
   static const std::set<std::string> kKnown = {
       "name", "robot", "world", "start.x", "start.y", "start.z", "start.theta", "start.axis.x",
       "start.axis.y", "start.axis.z", "goal.x", "goal.y", "goal.z", "goal.theta", "goal.axis.x",
@@ -129,20 +122,17 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
       // Read by OMPL.app for other planners or objectives; they do not change the problem's
       // geometry.
       "sampler", "objective", "objective.threshold", "control"};
-  for (const auto& [key, value] : section->second) {
+  for (const auto& [key, value] : section) {
     if (kKnown.count(key) == 0) {
       throw InputError(name + ":" + std::to_string(value.line),
                        "unknown key '" + key + "' in [problem]");
     }
   }
-  const ProblemSection p(name, section->second);
-  const bool planar = !p.has("start.z");
+}
 
-  LoadedMesh robot = load_mesh(mesh_path(cfg_file, p.text("robot")));
-  LoadedMesh world = load_mesh(mesh_path(cfg_file, p.text("world")));
-
-  // OMPL.app shifts every robot vertex by the mean of the robot's vertices (z kept for planar
-  // problems), in single precision: v - c computed on floats, then widened.
+/// OMPL.app shifts every robot vertex by the mean of the robot's vertices (z kept for planar
+/// problems), in single precision: v - c computed on floats, then widened.
+void centre_robot(LoadedMesh& robot, bool planar) {
   Eigen::Vector3d centre = robot.vertex_mean;
   if (planar)
     centre.z() = 0.0;
@@ -151,13 +141,14 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
       v[i] = static_cast<double>(static_cast<float>(v[i]) - static_cast<float>(centre[i]));
     }
   }
+}
 
+/// The volume.* keys, or else the world's bounding box; flat (z = 0) for planar problems.
+Bounds read_volume(const ProblemSection& p, const LoadedMesh& world, bool planar) {
   Bounds bounds;
   const char* axes[] = {"x", "y", "z"};
-  const int dims = planar ? 2 : 3;
-  const bool has_volume = p.has("volume.min.x");
-  if (has_volume) {
-    for (int i = 0; i < dims; ++i) {
+  if (p.has("volume.min.x")) {
+    for (int i = 0; i < (planar ? 2 : 3); ++i) {
       bounds.min[i] = p.number(std::string("volume.min.") + axes[i]);
       bounds.max[i] = p.number(std::string("volume.max.") + axes[i]);
     }
@@ -168,86 +159,125 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
   }
   if (planar)
     bounds.min.z() = bounds.max.z() = 0.0;
+  return bounds;
+}
 
-  Config start, goal;
+/// The start or goal (`prefix`): x, y, theta for planar problems; x, y, z and an axis-angle
+/// rotation otherwise.
+Config read_config(const ProblemSection& p, const std::string& prefix, bool planar,
+                   const std::string& file) {
+  Config q;
   if (planar) {
-    const auto yaw_q = [](double th) {
-      return Eigen::Quaterniond(Eigen::AngleAxisd(th, Eigen::Vector3d::UnitZ()));
-    };
-    start.t = {p.number("start.x"), p.number("start.y"), 0.0};
-    start.q = yaw_q(p.number("start.theta"));
-    goal.t = {p.number("goal.x"), p.number("goal.y"), 0.0};
-    goal.q = yaw_q(p.number("goal.theta"));
+    q.t = {p.number(prefix + ".x"), p.number(prefix + ".y"), 0.0};
+    q.q = Eigen::Quaterniond(
+        Eigen::AngleAxisd(p.number(prefix + ".theta"), Eigen::Vector3d::UnitZ()));
   } else {
-    start.t = {p.number("start.x"), p.number("start.y"), p.number("start.z")};
-    start.q = axis_angle(p, "start", name);
-    goal.t = {p.number("goal.x"), p.number("goal.y"), p.number("goal.z")};
-    goal.q = axis_angle(p, "goal", name);
+    q.t = {p.number(prefix + ".x"), p.number(prefix + ".y"), p.number(prefix + ".z")};
+    q.q = axis_angle(p, prefix, file);
   }
-  bounds.include(start.t);
-  bounds.include(goal.t);
-  if (!(bounds.min.head(dims).array() < bounds.max.head(dims).array()).all()) {
-    throw InputError(name, "the volume is empty (volume.min must be below volume.max)");
-  }
+  return q;
+}
 
+/// The robot as the object and the world as the one obstacle, both meshes.
+Scene make_scene(LoadedMesh robot, const std::filesystem::path& robot_file, LoadedMesh world,
+                 const std::filesystem::path& world_file) {
   Scene scene;
   scene.object.name = "robot";
   scene.object.parts.push_back(
-      {MeshShape{std::make_shared<const TriangleMesh>(std::move(robot.mesh)),
-                 mesh_path(cfg_file, p.text("robot")).string()},
+      {MeshShape{std::make_shared<const TriangleMesh>(std::move(robot.mesh)), robot_file.string()},
        Eigen::Isometry3d::Identity()});
   scene.object.color = {0.85, 0.45, 0.2, 1.0};
   Body env;
   env.name = "world";
-  env.parts.push_back({MeshShape{std::make_shared<const TriangleMesh>(std::move(world.mesh)),
-                                 mesh_path(cfg_file, p.text("world")).string()},
-                       Eigen::Isometry3d::Identity()});
+  env.parts.push_back(
+      {MeshShape{std::make_shared<const TriangleMesh>(std::move(world.mesh)), world_file.string()},
+       Eigen::Isometry3d::Identity()});
   env.color = {0.6, 0.65, 0.7, 1.0};
   scene.obstacles.push_back(std::move(env));
+  return scene;
+}
+
+/// [benchmark] time_limit and run_count.
+void read_benchmark_hints(const Ini& ini, const std::string& name, ProblemPlannerHints& hints) {
+  auto b = ini.find("benchmark");
+  if (b == ini.end())
+    return;
+  for (const auto& [key, value] : b->second) {
+    if (key == "time_limit") {
+      auto v = parse_double(value.text);
+      if (!v || !(*v > 0.0))
+        throw InputError(name + ":" + std::to_string(value.line),
+                         "time_limit must be a positive number");
+      hints.time_limit = *v;
+    } else if (key == "run_count") {
+      auto v = parse_uint(value.text);
+      if (!v || *v == 0)
+        throw InputError(name + ":" + std::to_string(value.line),
+                         "run_count must be a positive integer");
+      hints.run_count = static_cast<std::uint32_t>(*v);
+    }
+  }
+}
+
+/// [planner] rrt.range and rrtconnect.range (tandem's rrt and birrt).
+void read_planner_ranges(const Ini& ini, const std::string& name, ProblemPlannerHints& hints) {
+  auto pl = ini.find("planner");
+  if (pl == ini.end())
+    return;
+  static const std::map<std::string, std::string> kPlannerNames = {{"rrt", "rrt"},
+                                                                   {"rrtconnect", "birrt"}};
+  for (const auto& [key, value] : pl->second) {
+    const auto dot = key.find('.');
+    if (dot == std::string::npos || key.substr(dot + 1) != "range")
+      continue;
+    auto it = kPlannerNames.find(key.substr(0, dot));
+    if (it == kPlannerNames.end())
+      continue;
+    auto v = parse_double(value.text);
+    if (!v || !(*v > 0.0))
+      throw InputError(name + ":" + std::to_string(value.line), key + " must be a positive number");
+    hints.range[it->second] = *v;
+  }
+}
+
+}  // namespace
+
+Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
+  const std::string name = cfg_file.string();
+  const Ini ini = read_ini(cfg_file);
+  auto section = ini.find("problem");
+  if (section == ini.end())
+    throw InputError(name, "no [problem] section");
+  reject_unknown_keys(name, section->second);
+  const ProblemSection p(name, section->second);
+  const bool planar = !p.has("start.z");
+
+  const std::filesystem::path robot_file = mesh_path(cfg_file, p.text("robot"));
+  LoadedMesh robot = load_mesh(robot_file);
+  const std::filesystem::path world_file = mesh_path(cfg_file, p.text("world"));
+  LoadedMesh world = load_mesh(world_file);
+  centre_robot(robot, planar);
+
+  Bounds bounds = read_volume(p, world, planar);
+  const Config start = read_config(p, "start", planar, name);
+  const Config goal = read_config(p, "goal", planar, name);
+  bounds.include(start.t);
+  bounds.include(goal.t);
+  const int dims = planar ? 2 : 3;
+  if (!(bounds.min.head(dims).array() < bounds.max.head(dims).array()).all()) {
+    throw InputError(name, "the volume is empty (volume.min must be below volume.max)");
+  }
 
   Problem problem{p.has("name") ? p.text("name") : cfg_file.stem().string(),
                   name,
-                  std::move(scene),
+                  make_scene(std::move(robot), robot_file, std::move(world), world_file),
                   SE3Space(planar ? SpaceKind::planar : SpaceKind::se3, bounds),
                   start,
                   goal,
                   {},
                   {}};
-
-  if (auto b = ini.find("benchmark"); b != ini.end()) {
-    for (const auto& [key, value] : b->second) {
-      if (key == "time_limit") {
-        auto v = parse_double(value.text);
-        if (!v || !(*v > 0.0))
-          throw InputError(name + ":" + std::to_string(value.line),
-                           "time_limit must be a positive number");
-        problem.hints.time_limit = *v;
-      } else if (key == "run_count") {
-        auto v = parse_uint(value.text);
-        if (!v || *v == 0)
-          throw InputError(name + ":" + std::to_string(value.line),
-                           "run_count must be a positive integer");
-        problem.hints.run_count = static_cast<std::uint32_t>(*v);
-      }
-    }
-  }
-  if (auto pl = ini.find("planner"); pl != ini.end()) {
-    static const std::map<std::string, std::string> kPlannerNames = {{"rrt", "rrt"},
-                                                                     {"rrtconnect", "birrt"}};
-    for (const auto& [key, value] : pl->second) {
-      const auto dot = key.find('.');
-      if (dot == std::string::npos || key.substr(dot + 1) != "range")
-        continue;
-      auto it = kPlannerNames.find(key.substr(0, dot));
-      if (it == kPlannerNames.end())
-        continue;
-      auto v = parse_double(value.text);
-      if (!v || !(*v > 0.0))
-        throw InputError(name + ":" + std::to_string(value.line),
-                         key + " must be a positive number");
-      problem.hints.range[it->second] = *v;
-    }
-  }
+  read_benchmark_hints(ini, name, problem.hints);
+  read_planner_ranges(ini, name, problem.hints);
   return problem;
 }
 

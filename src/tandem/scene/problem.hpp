@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tandem/core/parameter.hpp"
 #include "tandem/scene/scene.hpp"
 #include "tandem/space/se3_space.hpp"
 
@@ -22,6 +23,13 @@ struct ProblemPlannerHints {
   std::optional<double> time_limit;     ///< seconds
   std::optional<std::uint64_t> seed;
   std::optional<std::uint32_t> run_count;  ///< benchmark runs ([benchmark] run_count in OMPL.app)
+  /// Any other tunable the problem sets (by its declared name; checked when a run is made).
+  struct Value {
+    std::string name;
+    ParamValue value;
+    std::string where;  ///< file:line
+  };
+  std::vector<Value> values;
 };
 
 struct Problem {

@@ -9,127 +9,13 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
+#include "tandem/core/toml_table.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 #include "tandem/scene/urdf_loader.hpp"
 
 namespace tandem {
 namespace {
-
-/// A TOML table that remembers which keys were read, so that unknown (misspelt) keys are reported.
-class Table {
- public:
-  Table(const toml::table& table, std::string source, std::string where)
-      : table_(table), source_(std::move(source)), where_(std::move(where)) {}
-
-  const std::string& where() const { return where_; }
-
-  std::string at(const toml::node& node) const {
-    return source_ + ":" + std::to_string(node.source().begin.line);
-  }
-  std::string at_table() const {
-    return table_.source().begin.line > 0
-               ? source_ + ":" + std::to_string(table_.source().begin.line)
-               : source_;
-  }
-
-  bool has(std::string_view key) const { return table_.contains(key); }
-
-  const toml::node* get(std::string_view key) {
-    used_.insert(std::string(key));
-    return table_.get(key);
-  }
-
-  const toml::node& require(std::string_view key) {
-    const toml::node* n = get(key);
-    if (!n)
-      throw InputError(at_table(), where_ + " needs '" + std::string(key) + "'");
-    return *n;
-  }
-
-  [[noreturn]] void fail(const toml::node& node, std::string_view key,
-                         const std::string& fault) const {
-    throw InputError(at(node), where_ + "." + std::string(key) + " " + fault);
-  }
-
-  double number(const toml::node& node, std::string_view key) const {
-    auto v = node.value<double>();
-    if (!v || !(node.is_floating_point() || node.is_integer()))
-      fail(node, key, "must be a number");
-    if (!std::isfinite(*v))
-      fail(node, key, "must be finite");
-    return *v;
-  }
-  double number(std::string_view key) { return number(require(key), key); }
-  std::optional<double> optional_number(std::string_view key) {
-    const toml::node* n = get(key);
-    if (!n)
-      return std::nullopt;
-    return number(*n, key);
-  }
-  double positive(std::string_view key) {
-    const toml::node& n = require(key);
-    const double v = number(n, key);
-    if (!(v > 0.0))
-      fail(n, key, "must be positive");
-    return v;
-  }
-
-  std::string string(std::string_view key) {
-    const toml::node& n = require(key);
-    auto v = n.value<std::string>();
-    if (!v || !n.is_string())
-      fail(n, key, "must be a string");
-    return *v;
-  }
-  std::optional<std::string> optional_string(std::string_view key) {
-    if (!has(key))
-      return std::nullopt;
-    return string(key);
-  }
-
-  std::vector<double> numbers(const toml::node& node, std::string_view key, std::size_t min_count,
-                              std::size_t max_count) const {
-    const toml::array* a = node.as_array();
-    if (!a)
-      fail(node, key, "must be an array of numbers");
-    if (a->size() < min_count || a->size() > max_count) {
-      fail(node, key,
-           min_count == max_count ? "must have " + std::to_string(min_count) + " numbers"
-                                  : "must have " + std::to_string(min_count) + " to " +
-                                        std::to_string(max_count) + " numbers");
-    }
-    std::vector<double> out;
-    for (const auto& e : *a)
-      out.push_back(number(e, key));
-    return out;
-  }
-  std::vector<double> numbers(std::string_view key, std::size_t min_count, std::size_t max_count) {
-    return numbers(require(key), key, min_count, max_count);
-  }
-
-  Table subtable(std::string_view key) {
-    const toml::node& n = require(key);
-    const toml::table* t = n.as_table();
-    if (!t)
-      fail(n, key, "must be a table");
-    return Table(*t, source_, where_ + "." + std::string(key));
-  }
-
-  void reject_unknown() const {
-    for (auto&& [key, node] : table_) {
-      if (used_.count(std::string(key.str())) == 0) {
-        throw InputError(at(node), "unknown key '" + std::string(key.str()) + "' in " + where_);
-      }
-    }
-  }
-
- private:
-  const toml::table& table_;
-  std::string source_;
-  std::string where_;
-  std::set<std::string> used_;
-};
 
 Eigen::Vector3d vec3(const std::vector<double>& v) {
   return {v[0], v[1], v.size() > 2 ? v[2] : 0.0};
@@ -137,7 +23,7 @@ Eigen::Vector3d vec3(const std::vector<double>& v) {
 
 /// Orientation from one of rpy_deg, rpy (radians, fixed axes x-y-z as URDF), quaternion [x, y, z,
 /// w], or, for planar spaces, yaw_deg / yaw.
-Eigen::Quaterniond read_rotation(Table& t, bool planar) {
+Eigen::Quaterniond read_rotation(TomlTable& t, bool planar) {
   const char* keys[] = {"rpy_deg", "rpy", "quaternion", "yaw_deg", "yaw"};
   int given = 0;
   for (const char* k : keys)
@@ -183,7 +69,7 @@ Eigen::Quaterniond read_rotation(Table& t, bool planar) {
   return q;
 }
 
-Eigen::Isometry3d read_pose(Table& t) {
+Eigen::Isometry3d read_pose(TomlTable& t) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   if (t.has("position"))
     X.translation() = vec3(t.numbers("position", 3, 3));
@@ -191,7 +77,7 @@ Eigen::Isometry3d read_pose(Table& t) {
   return X;
 }
 
-Color read_color(Table& t) {
+Color read_color(TomlTable& t) {
   Color c;
   const toml::node* n = t.get("color");
   if (!n)
@@ -230,9 +116,8 @@ struct Context {
   bool base_is_file;
 };
 
-/// Parts from one geometry table: exactly one of box, sphere, cylinder, mesh, urdf; posed by its
-/// position/orientation keys.
-std::vector<Part> read_shape(Table& t, const Context& ctx, UrdfRole role) {
+/// The geometry kinds of a shape table; exactly one must be given.
+void check_one_geometry(const TomlTable& t) {
   const char* kinds[] = {"box", "sphere", "cylinder", "mesh", "urdf"};
   int given = 0;
   for (const char* k : kinds)
@@ -243,86 +128,101 @@ std::vector<Part> read_shape(Table& t, const Context& ctx, UrdfRole role) {
                          " needs exactly one geometry: box, sphere, cylinder, mesh or urdf" +
                          (given > 1 ? " (several given)" : ""));
   }
-  const Eigen::Isometry3d X = read_pose(t);
-  auto file_ref = [&](std::string_view key) {
+}
+
+/// Loads the file a key names with `load`. Faults in it, and in the key, name both places:
+/// "scene.toml:12: part.stl: no such file".
+template <class Load>
+auto load_referenced(TomlTable& t, const Context& ctx, std::string_view key, Load&& load) {
+  const toml::node& n = t.require(key);
+  try {
     const std::string name = t.string(key);
-    if (!ctx.base_is_file) {
+    if (!ctx.base_is_file)
       throw InputError(ctx.source, "a built-in scene cannot refer to the file '" + name + "'");
-    }
-    return resolve_reference(name, ctx.base, ctx.access);
-  };
-  // Faults in a referenced file name both places: "scene.toml:12: part.stl: no such file".
-  auto referenced = [&](std::string_view key, auto&& load) {
-    const toml::node& n = t.require(key);
-    try {
-      return load(file_ref(key));
-    } catch (const InputError& e) {
-      throw InputError(t.at(n), e.what());
-    }
-  };
-  if (t.has("box")) {
-    const toml::node& n = t.require("box");
-    auto v = t.numbers(n, "box", 3, 3);
-    for (double s : v) {
-      if (!(s > 0.0))
-        t.fail(n, "box", "sizes must be positive");
-    }
-    return {{Box{vec3(v)}, X}};
+    return load(resolve_reference(name, ctx.base, ctx.access));
+  } catch (const InputError& e) {
+    throw InputError(t.at(n), e.what());
   }
-  if (t.has("sphere")) {
-    return {{Sphere{t.positive("sphere")}, X}};
+}
+
+Box read_box(TomlTable& t) {
+  const toml::node& n = t.require("box");
+  auto v = t.numbers(n, "box", 3, 3);
+  for (double s : v) {
+    if (!(s > 0.0))
+      t.fail(n, "box", "sizes must be positive");
   }
-  if (t.has("cylinder")) {
-    Table c = t.subtable("cylinder");
-    Cylinder cyl{c.positive("radius"), c.positive("length")};
-    c.reject_unknown();
-    return {{cyl, X}};
-  }
-  if (t.has("mesh")) {
-    Eigen::Vector3d scale = Eigen::Vector3d::Ones();
-    if (const toml::node* s = t.get("scale")) {
-      if (s->is_array()) {
-        scale = vec3(t.numbers(*s, "scale", 3, 3));
-      } else {
-        scale = Eigen::Vector3d::Constant(t.number(*s, "scale"));
-      }
-      if (!(scale.array() > 0.0).all())
-        t.fail(*s, "scale", "must be positive");
+  return Box{vec3(v)};
+}
+
+Cylinder read_cylinder(TomlTable& t) {
+  TomlTable c = t.subtable("cylinder");
+  Cylinder cyl{c.positive("radius"), c.positive("length")};
+  c.reject_unknown();
+  return cyl;
+}
+
+/// A mesh file's part, scaled by `scale` (one number or three).
+Part read_mesh(TomlTable& t, const Context& ctx, const Eigen::Isometry3d& X) {
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  if (const toml::node* s = t.get("scale")) {
+    if (s->is_array()) {
+      scale = vec3(t.numbers(*s, "scale", 3, 3));
+    } else {
+      scale = Eigen::Vector3d::Constant(t.number(*s, "scale"));
     }
-    return referenced("mesh", [&](const std::filesystem::path& file) {
-      LoadedMesh loaded = load_mesh(file);
-      for (auto& v : loaded.mesh.vertices)
-        v = v.cwiseProduct(scale);
-      return std::vector<Part>{
-          {MeshShape{std::make_shared<const TriangleMesh>(std::move(loaded.mesh)), file.string()},
-           X}};
-    });
+    if (!(scale.array() > 0.0).all())
+      t.fail(*s, "scale", "must be positive");
   }
-  Body body = referenced(
-      "urdf", [&](const std::filesystem::path& file) { return load_urdf(file, role, ctx.access); });
+  return load_referenced(t, ctx, "mesh", [&](const std::filesystem::path& file) {
+    LoadedMesh loaded = load_mesh(file);
+    for (auto& v : loaded.mesh.vertices)
+      v = v.cwiseProduct(scale);
+    return Part{
+        MeshShape{std::make_shared<const TriangleMesh>(std::move(loaded.mesh)), file.string()}, X};
+  });
+}
+
+/// The parts of a URDF file's body, posed by X.
+std::vector<Part> read_urdf(TomlTable& t, const Context& ctx, UrdfRole role,
+                            const Eigen::Isometry3d& X) {
+  Body body = load_referenced(t, ctx, "urdf", [&](const std::filesystem::path& file) {
+    return load_urdf(file, role, ctx.access);
+  });
   std::vector<Part> parts;
   for (auto& p : body.parts)
     parts.push_back({std::move(p.geometry), X * p.pose});
   return parts;
 }
 
+/// Parts from one geometry table: exactly one of box, sphere, cylinder, mesh, urdf; posed by its
+/// position/orientation keys.
+std::vector<Part> read_shape(TomlTable& t, const Context& ctx, UrdfRole role) {
+  check_one_geometry(t);
+  const Eigen::Isometry3d X = read_pose(t);
+  if (t.has("box"))
+    return {{read_box(t), X}};
+  if (t.has("sphere"))
+    return {{Sphere{t.positive("sphere")}, X}};
+  if (t.has("cylinder"))
+    return {{read_cylinder(t), X}};
+  if (t.has("mesh"))
+    return {read_mesh(t, ctx, X)};
+  return read_urdf(t, ctx, role, X);
+}
+
 /// A body: either one geometry at the body's level or a `shapes` array of geometry tables.
-Body read_body(Table& t, const Context& ctx, UrdfRole role, const std::string& default_name) {
+Body read_body(TomlTable& t, const Context& ctx, UrdfRole role, const std::string& default_name) {
   Body body;
   body.name = t.optional_string("name").value_or(default_name);
   if (body.name.empty())
     throw InputError(t.at_table(), t.where() + ".name must not be empty");
   body.color = read_color(t);
   if (t.has("shapes")) {
-    const toml::node& n = t.require("shapes");
-    const toml::array* shapes = n.as_array();
-    if (!shapes || shapes->empty())
-      t.fail(n, "shapes", "must be a non-empty array of tables");
-    for (std::size_t i = 0; i < shapes->size(); ++i) {
-      const toml::table* st = (*shapes)[i].as_table();
-      if (!st)
-        t.fail((*shapes)[i], "shapes", "must contain tables");
-      Table shape(*st, ctx.source, t.where() + ".shapes[" + std::to_string(i) + "]");
+    const toml::array& shapes = t.table_array("shapes", true);
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      TomlTable shape =
+          t.array_item(shapes[i], "shapes", t.where() + ".shapes[" + std::to_string(i) + "]");
       for (auto& p : read_shape(shape, ctx, role))
         body.parts.push_back(std::move(p));
       shape.reject_unknown();
@@ -334,7 +234,7 @@ Body read_body(Table& t, const Context& ctx, UrdfRole role, const std::string& d
   return body;
 }
 
-Config read_config(Table& t, const SE3Space& space) {
+Config read_config(TomlTable& t, const SE3Space& space) {
   Config q;
   if (space.planar()) {
     auto p = t.numbers("position", 2, 2);
@@ -347,29 +247,17 @@ Config read_config(Table& t, const SE3Space& space) {
   return q;
 }
 
-}  // namespace
-
-Problem parse_scenario(std::string_view text, const std::string& source,
-                       const std::filesystem::path& base, const FileAccess& access) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(source + ":" + std::to_string(e.source().begin.line),
-                     "invalid TOML: " + std::string(e.description()));
-  }
-  const Context ctx{source, base, access, base.has_filename() && std::filesystem::exists(base)};
-  Table top(root, source, "scenario");
-  const std::string name = top.optional_string("name").value_or(base.stem().string());
-  top.optional_string("description");
-
-  Table space_t = top.subtable("space");
+/// space.kind: true for "planar", false for "se3" (the default).
+bool read_planar(TomlTable& space_t) {
   const std::string kind = space_t.optional_string("kind").value_or("se3");
   if (kind != "se3" && kind != "planar") {
     throw InputError(space_t.at(space_t.require("kind")),
                      "space.kind must be \"se3\" or \"planar\", got \"" + kind + "\"");
   }
-  const bool planar = kind == "planar";
+  return kind == "planar";
+}
+
+Bounds read_bounds(TomlTable& space_t, bool planar) {
   Bounds bounds;
   bounds.min = vec3(space_t.numbers("min", planar ? 2 : 3, 3));
   bounds.max = vec3(space_t.numbers("max", planar ? 2 : 3, 3));
@@ -382,117 +270,146 @@ Problem parse_scenario(std::string_view text, const std::string& source,
             .all())) {
     throw InputError(space_t.at_table(), "space.min must be below space.max on every axis");
   }
+  return bounds;
+}
+
+/// The [space] table: kind, bounds, metric weights, resolution.
+SE3Space read_space(TomlTable& top) {
+  TomlTable space_t = top.subtable("space");
+  const bool planar = read_planar(space_t);
+  const Bounds bounds = read_bounds(space_t, planar);
   MetricWeights weights;
   weights.translation = space_t.optional_number("translation_weight").value_or(weights.translation);
   weights.rotation = space_t.optional_number("rotation_weight").value_or(weights.rotation);
   const double resolution =
       space_t.optional_number("resolution").value_or(SE3Space::kDefaultResolution);
   space_t.reject_unknown();
-  std::optional<SE3Space> space;
   try {
-    space.emplace(planar ? SpaceKind::planar : SpaceKind::se3, bounds, weights, resolution);
+    return SE3Space(planar ? SpaceKind::planar : SpaceKind::se3, bounds, weights, resolution);
   } catch (const InputError& e) {
     throw InputError(space_t.at_table(), std::string("space: ") + e.what());
   }
+}
+
+/// The [[obstacle]] tables, each with a name of its own.
+std::vector<Body> read_obstacles(TomlTable& top, const Context& ctx) {
+  std::vector<Body> obstacles;
+  if (!top.has("obstacle"))
+    return obstacles;
+  const toml::array& list = top.table_array("obstacle", false, " ([[obstacle]])");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TomlTable o = top.array_item(list[i], "obstacle", "obstacle[" + std::to_string(i) + "]",
+                                 " ([[obstacle]])");
+    o.require("name");
+    Body body = read_body(o, ctx, UrdfRole::obstacle, "");
+    if (!names.insert(body.name).second)
+      throw InputError(o.at_table(), "obstacle name '" + body.name + "' is used twice");
+    obstacles.push_back(std::move(body));
+  }
+  return obstacles;
+}
+
+/// The [guide] table's keyframes (none without a [guide]).
+std::vector<Config> read_guide(TomlTable& top, const SE3Space& space) {
+  std::vector<Config> guide;
+  if (!top.has("guide"))
+    return guide;
+  TomlTable g = top.subtable("guide");
+  const toml::array& keys = g.table_array("keyframes", true);
+  if (keys.size() > kMaxGuideKeyframes) {
+    g.fail(g.require("keyframes"), "keyframes",
+           "has " + std::to_string(keys.size()) + " keyframes; a guide has at most " +
+               std::to_string(kMaxGuideKeyframes));
+  }
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    TomlTable k = g.array_item(keys[i], "keyframes", "guide.keyframes[" + std::to_string(i) + "]");
+    Config q = read_config(k, space);
+    if (!space.satisfies_bounds(q))
+      throw InputError(k.at_table(), k.where() + " is outside the space's bounds");
+    guide.push_back(q);
+  }
+  g.reject_unknown();
+  return guide;
+}
+
+/// planner.name: "birrt" or "rrt".
+void read_planner_name(TomlTable& p, ProblemPlannerHints& hints) {
+  if (auto n = p.optional_string("name")) {
+    if (*n != "birrt" && *n != "rrt")
+      throw InputError(p.at(p.require("name")), "planner.name must be \"birrt\" or \"rrt\"");
+    hints.planner = *n;
+  }
+}
+
+/// planner.range (for both planners) and planner.goal_bias.
+void read_planner_range(TomlTable& p, ProblemPlannerHints& hints) {
+  if (p.has("range")) {
+    const double r = p.positive("range");
+    hints.range["birrt"] = r;
+    hints.range["rrt"] = r;
+  }
+  if (p.has("goal_bias")) {
+    const toml::node& n = p.require("goal_bias");
+    const double b = p.number(n, "goal_bias");
+    if (b < 0.0 || b > 1.0)
+      p.fail(n, "goal_bias", "must be in [0, 1]");
+    hints.goal_bias = b;
+  }
+}
+
+/// planner.extend: "classic" or "last-valid".
+void read_planner_extend(TomlTable& p, ProblemPlannerHints& hints) {
+  if (auto e = p.optional_string("extend")) {
+    if (*e != "classic" && *e != "last-valid")
+      throw InputError(p.at(p.require("extend")),
+                       "planner.extend must be \"classic\" or \"last-valid\"");
+    hints.extend = *e;
+  }
+}
+
+/// The [planner] table: the problem's suggested planner settings (none without it).
+ProblemPlannerHints read_planner_hints(TomlTable& top) {
+  ProblemPlannerHints hints;
+  if (!top.has("planner"))
+    return hints;
+  TomlTable p = top.subtable("planner");
+  read_planner_name(p, hints);
+  read_planner_range(p, hints);
+  read_planner_extend(p, hints);
+  if (p.has("time_limit"))
+    hints.time_limit = p.positive("time_limit");
+  if (auto seed = p.optional_integer("seed", 0))
+    hints.seed = static_cast<std::uint64_t>(*seed);
+  p.reject_unknown();
+  return hints;
+}
+
+}  // namespace
+
+Problem parse_scenario(std::string_view text, const std::string& source,
+                       const std::filesystem::path& base, const FileAccess& access) {
+  const toml::table root = parse_toml(text, source);
+  const Context ctx{source, base, access, base.has_filename() && std::filesystem::exists(base)};
+  TomlTable top(root, source, "scenario");
+  const std::string name = top.optional_string("name").value_or(base.stem().string());
+  top.optional_string("description");
+  const SE3Space space = read_space(top);
 
   Scene scene;
   {
-    Table object = top.subtable("object");
+    TomlTable object = top.subtable("object");
     scene.object = read_body(object, ctx, UrdfRole::object, "object");
   }
-  if (const toml::node* obstacles = top.get("obstacle")) {
-    const toml::array* list = obstacles->as_array();
-    if (!list)
-      top.fail(*obstacles, "obstacle", "must be an array of tables ([[obstacle]])");
-    std::set<std::string> names;
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const toml::table* ot = (*list)[i].as_table();
-      if (!ot)
-        top.fail((*list)[i], "obstacle", "must contain tables ([[obstacle]])");
-      Table o(*ot, source, "obstacle[" + std::to_string(i) + "]");
-      o.require("name");
-      Body body = read_body(o, ctx, UrdfRole::obstacle, "");
-      if (!names.insert(body.name).second) {
-        throw InputError(o.at_table(), "obstacle name '" + body.name + "' is used twice");
-      }
-      scene.obstacles.push_back(std::move(body));
-    }
-  }
-
-  Config start, goal;
-  {
-    Table s = top.subtable("start");
-    start = read_config(s, *space);
-    Table g = top.subtable("goal");
-    goal = read_config(g, *space);
-  }
-
-  std::vector<Config> guide;
-  if (top.has("guide")) {
-    Table g = top.subtable("guide");
-    const toml::node& n = g.require("keyframes");
-    const toml::array* keys = n.as_array();
-    if (!keys || keys->empty())
-      g.fail(n, "keyframes", "must be a non-empty array of tables");
-    if (keys->size() > kMaxGuideKeyframes) {
-      g.fail(n, "keyframes",
-             "has " + std::to_string(keys->size()) + " keyframes; a guide has at most " +
-                 std::to_string(kMaxGuideKeyframes));
-    }
-    for (std::size_t i = 0; i < keys->size(); ++i) {
-      const toml::table* kt = (*keys)[i].as_table();
-      if (!kt)
-        g.fail((*keys)[i], "keyframes", "must contain tables");
-      Table k(*kt, source, "guide.keyframes[" + std::to_string(i) + "]");
-      Config q = read_config(k, *space);
-      if (!space->satisfies_bounds(q)) {
-        throw InputError(k.at_table(), k.where() + " is outside the space's bounds");
-      }
-      guide.push_back(q);
-    }
-    g.reject_unknown();
-  }
-
-  ProblemPlannerHints hints;
-  if (top.has("planner")) {
-    Table p = top.subtable("planner");
-    if (auto n = p.optional_string("name")) {
-      if (*n != "birrt" && *n != "rrt")
-        throw InputError(p.at(p.require("name")), "planner.name must be \"birrt\" or \"rrt\"");
-      hints.planner = *n;
-    }
-    if (p.has("range")) {
-      const double r = p.positive("range");
-      hints.range["birrt"] = r;
-      hints.range["rrt"] = r;
-    }
-    if (p.has("goal_bias")) {
-      const toml::node& n = p.require("goal_bias");
-      const double b = p.number(n, "goal_bias");
-      if (b < 0.0 || b > 1.0)
-        p.fail(n, "goal_bias", "must be in [0, 1]");
-      hints.goal_bias = b;
-    }
-    if (auto e = p.optional_string("extend")) {
-      if (*e != "classic" && *e != "last-valid")
-        throw InputError(p.at(p.require("extend")),
-                         "planner.extend must be \"classic\" or \"last-valid\"");
-      hints.extend = *e;
-    }
-    if (p.has("time_limit"))
-      hints.time_limit = p.positive("time_limit");
-    if (p.has("seed")) {
-      const toml::node& n = p.require("seed");
-      auto v = n.value<std::int64_t>();
-      if (!v || !n.is_integer() || *v < 0)
-        p.fail(n, "seed", "must be a non-negative integer");
-      hints.seed = static_cast<std::uint64_t>(*v);
-    }
-    p.reject_unknown();
-  }
+  scene.obstacles = read_obstacles(top, ctx);
+  TomlTable start_t = top.subtable("start");
+  const Config start = read_config(start_t, space);
+  TomlTable goal_t = top.subtable("goal");
+  const Config goal = read_config(goal_t, space);
+  std::vector<Config> guide = read_guide(top, space);
+  const ProblemPlannerHints hints = read_planner_hints(top);
   top.reject_unknown();
-
-  return Problem{name, source, std::move(scene), *space, start, goal, hints, std::move(guide)};
+  return Problem{name, source, std::move(scene), space, start, goal, hints, std::move(guide)};
 }
 
 Problem load_scenario_file(const std::filesystem::path& file, const FileAccess& access) {

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 
 namespace tandem {

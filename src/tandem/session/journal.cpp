@@ -10,8 +10,8 @@
 
 #include "tandem/core/digest.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/io/json_codec.hpp"
-#include "tandem/io/text.hpp"
 
 namespace tandem {
 namespace {

@@ -6,17 +6,16 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
 
 std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunSpec& spec,
                                               bool spacemouse) {
-  if (!is_interactive(spec.mode)) {
+  if (!uses_operator(spec)) {
     throw InputError("--mode",
-                     "a live session needs an interactive mode (interactive, "
-                     "interactive-contact or irrt), not " +
-                         std::string(to_string(spec.mode)));
+                     "a live session needs a planner that takes an operator, not " + spec.mode);
   }
   std::shared_ptr<const OperatorSource> simulated;
   if (spec.operator_name != "browser")
@@ -34,7 +33,7 @@ JournalHeader header_for(const Problem& problem, const RunSpec& spec, const Live
   JournalHeader h;
   h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
   h.problem_digest = format_digest(problem_digest(problem));
-  h.mode = std::string(to_string(spec.mode));
+  h.mode = spec.mode;
   h.settings = spec.settings;
   h.operator_description = source.describe();
   h.started = utc_now_iso8601();
@@ -60,7 +59,6 @@ LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const Live
       checker_(problem.scene),
       validator_(problem.space, checker_),
       feed_(channel_) {
-  spec_.settings = mode_settings(spec.mode, spec.settings);
   parameters_.set(spec_.settings.interaction);
   settings_now_ = spec_.settings.interaction;
   paused_ = options.start_paused;
@@ -80,8 +78,8 @@ LiveSession::~LiveSession() {
 
 void LiveSession::start_planner() {
   planner_.reset();
-  planner_ = make_planner(planner_name(spec_.mode), validator_, problem_.start, problem_.goal,
-                          spec_.settings, &interaction_);
+  planner_ = make_planner(spec_.mode, validator_, problem_.start, problem_.goal, spec_.settings,
+                          &interaction_);
   status_ = PlannerStatus::running;
   have_guidance_ = false;
 }

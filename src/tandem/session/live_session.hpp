@@ -23,9 +23,10 @@
 #include <optional>
 #include <string>
 
-#include "tandem/experiments/run.hpp"
-#include "tandem/interaction/operator_switch.hpp"
+#include "tandem/interaction/interaction.hpp"
 #include "tandem/interaction/operator_thread.hpp"
+#include "tandem/operators/operator_switch.hpp"
+#include "tandem/runs/run.hpp"
 #include "tandem/session/journal.hpp"
 
 namespace tandem {

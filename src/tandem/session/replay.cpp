@@ -1,7 +1,9 @@
 #include "tandem/session/replay.hpp"
 
 #include "tandem/core/error.hpp"
-#include "tandem/experiments/run.hpp"
+#include "tandem/interaction/interaction.hpp"
+#include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/run.hpp"
 
 namespace tandem {
 
@@ -13,9 +15,11 @@ ReplayResult replay_journal(const Problem& problem, const Journal& journal,
                                     format_digest(problem_digest(problem)) + ", the journal's " +
                                     h.problem_digest + ")");
   }
-  const auto mode = parse_planner_mode(h.mode);
-  if (!mode || !is_interactive(*mode))
-    throw InputError(h.problem, "the journal's mode '" + h.mode + "' is not an interactive mode");
+  const PlannerEntry* entry = find_planner(h.mode);
+  if (entry == nullptr || !entry->uses_operator) {
+    throw InputError(h.problem,
+                     "the journal's mode '" + h.mode + "' is not a planner that takes an operator");
+  }
 
   // The operator states as the live planner saw them, one list per planner (the user may have
   // started over); the nearest obstacle and the contact frame are recomputed from q_device, as the
@@ -36,8 +40,8 @@ ReplayResult replay_journal(const Problem& problem, const Journal& journal,
     planner.reset();
     feed = std::make_unique<ReplayFeed>(std::move(segments[segment]));
     interaction.feed = feed.get();
-    planner = make_planner(planner_name(*mode), validator, problem.start, problem.goal, h.settings,
-                           &interaction);
+    planner =
+        make_planner(h.mode, validator, problem.start, problem.goal, h.settings, &interaction);
   };
   start_planner(0);
 

@@ -46,35 +46,20 @@ Config parse_pose(const json& j) {
   return q;
 }
 
+/// A "params" message: every field a declared interaction tunable, within its declared range.
 InteractionSettings parse_params(const json& j, InteractionSettings s) {
   bool any = false;
   for (const auto& [key, value] : j.items()) {
     if (key == "type")
       continue;
     any = true;
-    if (key == "alpha") {
-      s.alpha = number_in(value, "alpha", 0.0, 1.0);
-    } else if (key == "contact") {
-      if (!value.is_boolean())
-        throw ProtocolError("contact must be true or false");
-      s.contact = value.get<bool>();
-    } else if (key == "contact_samples") {
-      s.contact_samples = static_cast<int>(number_in(value, "contact_samples", 1, 1000));
-    } else if (key == "contact_distance") {
-      s.contact_distance = number_in(value, "contact_distance", 0.0, 1e6);
-    } else if (key == "sigma") {
-      s.sigma = number_in(value, "sigma", 0.0, 1e6);
-    } else if (key == "force_mix") {
-      s.force_mix = number_in(value, "force_mix", 0.0, 1.0);
-    } else if (key == "sampling") {
-      const auto mode =
-          value.is_string() ? parse_irrt_sampling(value.get<std::string>()) : std::nullopt;
-      if (!mode)
-        throw ProtocolError("sampling must be mag, path, mag+cs or path+cs");
-      s.sampling = *mode;
-    } else {
+    const Param<InteractionSettings>* p = find_param(interaction_parameters(), key);
+    if (p == nullptr || !p->spec.live)
       throw ProtocolError("unknown parameter '" + key.substr(0, 40) + "'");
-    }
+    const ParamValue v = param_from_json(value);
+    if (auto fault = param_fault(p->spec, v))
+      throw ProtocolError(key + " " + *fault);
+    p->set(s, normalise_param(p->spec, v));
   }
   if (!any)
     throw ProtocolError("params names no parameter");
@@ -157,6 +142,15 @@ ClientMessage parse_client_message(std::string_view text, const InteractionSetti
     throw ProtocolError("unknown message type '" + type.substr(0, 40) + "'");
   }
   return m;
+}
+
+json announced_parameters(std::string_view planner, const InteractionSettings& defaults) {
+  json list = json::array();
+  for (const auto& p : interaction_parameters()) {
+    if (p.spec.live && !p.spec.modes.empty() && p.spec.used_by(planner))
+      list.push_back(param_spec_json(p.spec, p.get(defaults)));
+  }
+  return list;
 }
 
 std::string encode_scene(const Problem& problem) {

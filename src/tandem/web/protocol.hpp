@@ -12,19 +12,20 @@
 // Browser to server (text, at most kMaxMessageBytes):
 //   {"type":"pose","q":[x,y,z,qx,qy,qz,qw],"id":n}   the browser moves the part (takes over)
 //   {"type":"input","input":"simulated|browser|spacemouse"}
-//   {"type":"params", any of "alpha","contact","contact_samples","contact_distance","sampling",
-//    "sigma","force_mix"}
+//   {"type":"params", NAME: value, ...}   live tunables of interaction_parameters(), each within
+//                                        its declared range (the hello announces them)
 //   {"type":"command","command":"pause|resume|step|reset"}
 // Anything else, or a value out of range, is refused with a ProtocolError naming the fault.
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "tandem/interaction/operator_switch.hpp"
-#include "tandem/planning/interaction.hpp"
+#include "tandem/interaction/interaction_settings.hpp"
+#include "tandem/operators/operator_switch.hpp"
 #include "tandem/scene/problem.hpp"
 
 namespace tandem {
@@ -48,6 +49,10 @@ struct ClientMessage {
 /// Parses and validates a message. `current` is what a "params" message changes. Throws
 /// ProtocolError.
 ClientMessage parse_client_message(std::string_view text, const InteractionSettings& current);
+
+/// The live tunables `planner` reads, as the hello message announces them to the tuning panel
+/// (see param_spec_json), with the session's starting values as defaults.
+nlohmann::json announced_parameters(std::string_view planner, const InteractionSettings& defaults);
 
 /// The scene for the viewer: every body as triangles in its frame (obstacles in the world frame,
 /// the object in its own frame), with colours, the bounds, start, goal and guide. JSON.

@@ -5,13 +5,20 @@
 #include "tandem/io/json_codec.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/irrt.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 
 using nlohmann::json;
 
 ViewerState::ViewerState(const Problem& problem, std::string mode, bool replay)
-    : problem_(problem), scene_(encode_scene(problem)), mode_(std::move(mode)), replay_(replay) {}
+    : problem_(problem),
+      scene_(encode_scene(problem)),
+      mode_(std::move(mode)),
+      replay_(replay),
+      // A replay cannot be tuned: it announces no tunable.
+      parameters_(replay ? json::array()
+                         : announced_parameters(mode_, default_settings(mode_).interaction)) {}
 
 void ViewerState::observe(const LiveSession& session, const Planner& planner) {
   update(planner, live_status_json(session, planner),
@@ -95,6 +102,7 @@ std::vector<Frame> ViewerState::pending(Cursor& cursor, std::size_t max_nodes) c
                                     {"problem", problem_.name},
                                     {"mode", mode_},
                                     {"replay", replay_},
+                                    {"parameters", parameters_},
                                     {"generation", generation_}}
                                    .dump()});
     cursor = Cursor{};
@@ -166,7 +174,7 @@ std::string live_status_json(const LiveSession& session, const Planner& planner)
   const LiveProgress p = session.progress();
   const PlannerStats& s = planner.stats();
   const OperatorSwitch::Snapshot input = session.operator_input().snapshot();
-  json j = status_fields(planner, to_string(p.status), to_string(session.spec().mode), p.elapsed_s);
+  json j = status_fields(planner, to_string(p.status), session.spec().mode, p.elapsed_s);
   j.update(json{{"paused", p.paused},
                 {"steps", p.steps},
                 {"resets", p.resets},

@@ -66,6 +66,7 @@ class ViewerState final : public LiveObserver {
   std::string scene_;
   std::string mode_;
   bool replay_;
+  nlohmann::json parameters_;  ///< the hello's tunables
   mutable std::mutex mutex_;
   std::uint32_t generation_ = 0;
   std::vector<TreeCopy> trees_;

@@ -1,4 +1,4 @@
-#include "tandem/devices/spacenav.hpp"
+#include "tandem/operators/spacenav.hpp"
 
 #include <spnav.h>
 

@@ -1,6 +1,7 @@
 #pragma once
-// The human loop as the planner sees it: the operator's state (through an OperatorFeed) and the
-// tunables of the interactive planners, which the viewer may change while planning.
+// The interactive planners' tunables, declared once (interaction_parameters()): authority sharing
+// alpha, contact sampling (N, d), and the I-RRT's. The viewer may change them while planning
+// (InteractionParameters).
 //
 //   Blin, Taix, Fillatreau, Fourquet, "I-RRT-C: Interactive Motion Planning with Contact", IROS
 //   2016, and "Tuning Interaction in Motion Planning with Contact": authority sharing alpha,
@@ -11,8 +12,8 @@
 #include <optional>
 #include <string_view>
 
+#include "tandem/core/parameter.hpp"
 #include "tandem/interaction/latest_value.hpp"
-#include "tandem/interaction/operator_feed.hpp"
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
@@ -23,18 +24,19 @@ enum class IrrtSampling : std::uint8_t { mag, path, mag_cs, path_cs };
 std::string_view to_string(IrrtSampling mode);
 std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name);
 
-/// The interactive planners' tunables, with their defaults. Lengths in scene units; a value <= 0
-/// means "scaled to the scene" as documented.
+/// The interactive planners' tunables. The default member initialisers are the defaults every
+/// surface shows; ranges, units and help are in interaction_parameters(). Lengths in scene units;
+/// a value of 0 means "scaled to the scene" as documented.
 struct InteractionSettings {
   /// Authority sharing: the probability that the computer has authority (a uniform sample) in an
-  /// iteration; else the operator has it. 1 is BiRRT alone, 0 the operator alone.
-  double alpha = 1.0;
+  /// iteration; else the operator has it. 1 is BiRRT alone, 0 the operator alone. The papers' 0.5.
+  double alpha = 0.5;
   bool contact = false;      ///< contact sampling when the operator is near an obstacle
   int contact_samples = 10;  ///< N, the papers' value
-  /// d: contact mode when the object at q_device is within d of an obstacle. <= 0: 1.5% of the
+  /// d: contact mode when the object at q_device is within d of an obstacle. 0: 1.5% of the
   /// bounds' diagonal (the papers' 0.15 m in their 10 m scene).
   double contact_distance = 0.0;
-  /// Gap between contact samples and the tangent plane (FCL counts touching as collision). <= 0:
+  /// Gap between contact samples and the tangent plane (FCL counts touching as collision). 0:
   /// 0.1 x the space's translation step.
   double contact_clearance = 0.0;
 
@@ -42,14 +44,17 @@ struct InteractionSettings {
   IrrtSampling sampling = IrrtSampling::mag;
   double force_mix = 0.5;  ///< the I-RRT's alpha: F_r = force_mix F_u + (1 - force_mix) F_a
   int neighbours = 10;     ///< p, nearest nodes to the user for the centre of mass (the paper's 10)
-  /// sigma, standard deviation of the Gaussian shooting area across F_r, in translation; <= 0: 2%
-  /// of the bounds' diagonal. The rotation part uses sigma / diagonal x pi.
+  /// sigma, standard deviation of the Gaussian shooting area across F_r, in translation; 0: 2% of
+  /// the bounds' diagonal. The rotation part uses sigma / diagonal x pi.
   double sigma = 0.0;
-  int uniform_every =
-      10;  ///< x: in +CS modes, one uniform sample every x shots when the user is still
+  /// x: in +CS modes, one uniform sample every x shots when the user is still.
+  int uniform_every = 10;
 };
 
-/// Scene-scaled values of the "<= 0 means default" fields.
+/// The declarations of InteractionSettings' fields (all live: the viewer may change them).
+const ParamTable<InteractionSettings>& interaction_parameters();
+
+/// Scene-scaled values of the "0 means default" fields.
 double contact_distance(const InteractionSettings& s, const SE3Space& space);
 double contact_clearance(const InteractionSettings& s, const SE3Space& space);
 double sigma_translation(const InteractionSettings& s, const SE3Space& space);
@@ -74,22 +79,6 @@ class InteractionParameters {
  private:
   LatestValue<InteractionSettings> channel_;
   InteractionSettings current_;
-};
-
-/// The guidance pseudo-force F_a the I-RRT sends back to the device (2011, section V-A): from the
-/// user's position toward the labelled centre of mass of the p nearest nodes. Linear part in scene
-/// units, angular part a rotation vector in radians.
-struct Guidance {
-  std::uint64_t iteration = 0;
-  Eigen::Matrix<double, 6, 1> force = Eigen::Matrix<double, 6, 1>::Zero();
-};
-
-/// What an interactive planner is connected to. The feed is required; parameters and guidance are
-/// optional (without parameters the planner uses PlannerSettings::interaction throughout).
-struct Interaction {
-  OperatorFeed* feed = nullptr;
-  InteractionParameters* parameters = nullptr;
-  LatestValue<Guidance>* guidance = nullptr;
 };
 
 }  // namespace tandem

@@ -1,38 +1,13 @@
-#include "tandem/experiments/run.hpp"
+#include "tandem/runs/run.hpp"
 
 #include <sstream>
 
 #include "tandem/core/error.hpp"
 #include "tandem/operators/guide_follower.hpp"
 #include "tandem/operators/trace.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
-
-std::string_view to_string(PlannerMode mode) {
-  static constexpr std::string_view kNames[] = {"birrt", "rrt", "interactive",
-                                                "interactive-contact", "irrt"};
-  return kNames[static_cast<std::size_t>(mode)];
-}
-
-const std::vector<std::string>& planner_mode_names() {
-  static const std::vector<std::string> kNames = {"birrt", "rrt", "interactive",
-                                                  "interactive-contact", "irrt"};
-  return kNames;
-}
-
-std::optional<PlannerMode> parse_planner_mode(std::string_view name) {
-  for (auto m : {PlannerMode::birrt, PlannerMode::rrt, PlannerMode::interactive,
-                 PlannerMode::interactive_contact, PlannerMode::irrt}) {
-    if (to_string(m) == name)
-      return m;
-  }
-  return std::nullopt;
-}
-
-bool is_interactive(PlannerMode mode) {
-  return mode == PlannerMode::interactive || mode == PlannerMode::interactive_contact ||
-         mode == PlannerMode::irrt;
-}
 
 std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec,
                                                     OperatorClock clock) {
@@ -70,39 +45,21 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec) {
   return execute_run(problem, spec, checker);
 }
 
-std::string_view planner_name(PlannerMode mode) {
-  return mode == PlannerMode::rrt ? "rrt" : (mode == PlannerMode::irrt ? "irrt" : "birrt");
-}
-
-PlannerSettings mode_settings(PlannerMode mode, const PlannerSettings& settings) {
-  PlannerSettings s = settings;
-  if (mode == PlannerMode::birrt || mode == PlannerMode::rrt) {
-    s.interaction.alpha = 1.0;
-    s.interaction.contact = false;
-  } else if (mode == PlannerMode::interactive) {
-    s.interaction.contact = false;
-  } else if (mode == PlannerMode::interactive_contact) {
-    s.interaction.contact = true;
-  }
-  return s;
-}
-
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker) {
   MotionValidator validator(problem.space, checker);
-  const PlannerSettings settings = mode_settings(spec.mode, spec.settings);
 
   RunOutcome outcome;
   std::unique_ptr<VirtualTimeFeed> feed;
   Interaction interaction;
-  if (is_interactive(spec.mode)) {
+  if (uses_operator(spec)) {
     auto source = make_operator(problem, spec);
     outcome.operator_description = source->describe();
     feed = std::make_unique<VirtualTimeFeed>(OperatorModel(checker, std::move(source)),
                                              spec.operator_period);
     interaction.feed = feed.get();
   }
-  auto planner = make_planner(planner_name(spec.mode), validator, problem.start, problem.goal,
-                              settings, interaction.feed != nullptr ? &interaction : nullptr);
+  auto planner = make_planner(spec.mode, validator, problem.start, problem.goal, spec.settings,
+                              interaction.feed != nullptr ? &interaction : nullptr);
   Termination termination;
   termination.time_limit_s = spec.time_limit;
   termination.max_iterations = spec.max_iterations;

@@ -1,4 +1,4 @@
-#include "tandem/interaction/operator_switch.hpp"
+#include "tandem/operators/operator_switch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tandem/io/text.hpp"
+#include "tandem/core/text.hpp"
 
 #include <cctype>
 #include <charconv>

@@ -22,8 +22,8 @@
 #include <string>
 #include <string_view>
 
-#include "tandem/devices/spacenav.hpp"
-#include "tandem/operators/operator_source.hpp"
+#include "tandem/interaction/operator_source.hpp"
+#include "tandem/operators/spacenav.hpp"
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {

@@ -1,0 +1,149 @@
+#include "tandem/interaction/interaction_settings.hpp"
+
+namespace tandem {
+namespace {
+
+using S = InteractionSettings;
+
+// The planners (registry names) each group of tunables belongs to.
+const std::vector<std::string_view> kSharing = {"interactive", "interactive-contact"};
+const std::vector<std::string_view> kIrrt = {"irrt"};
+
+ParamTable<S> make_table() {
+  const double inf = std::numeric_limits<double>::infinity();
+  ParamTable<S> t;
+  t.push_back(real_param<S>(
+      {.name = "alpha",
+       .symbol = "α",
+       .label = "authority sharing",
+       .min = 0.0,
+       .max = 1.0,
+       .help = "Authority sharing: the probability that the computer (a uniform sample) has "
+               "authority in an iteration; else the operator has it (Blin et al. 2016, Alg. 1)",
+       .modes = kSharing,
+       .live = true},
+      &S::alpha));
+  t.push_back(boolean_param<S>(
+      {.name = "contact",
+       .label = "contact sampling",
+       .help = "Contact sampling near obstacles (Alg. 3); on by default in interactive-contact",
+       .modes = kSharing,
+       .live = true},
+      &S::contact));
+  t.push_back(integer_param<S>(
+      {.name = "contact_samples",
+       .symbol = "N",
+       .label = "contact samples",
+       .min = 1.0,
+       .max = 100000.0,
+       .help = "Samples on the tangent plane each time contact mode is entered (the papers' 10)",
+       .modes = kSharing,
+       .live = true},
+      &S::contact_samples));
+  t.push_back(real_param<S>(
+      {.name = "contact_distance",
+       .symbol = "d",
+       .label = "contact distance",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Contact mode within this distance of an obstacle (0: 1.5% of the bounds' "
+               "diagonal)",
+       .modes = kSharing,
+       .live = true},
+      &S::contact_distance));
+  t.push_back(real_param<S>(
+      {.name = "contact_clearance",
+       .label = "contact clearance",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Gap between contact samples and the tangent plane (0: 0.1 x the motion "
+               "checker's translation step)",
+       .modes = kSharing,
+       .live = true},
+      &S::contact_clearance));
+  t.push_back(choice_param<S>(
+      {.name = "sampling",
+       .label = "I-RRT sampling",
+       .choices = {"mag", "path", "mag+cs", "path+cs"},
+       .help = "I-RRT sampling mode: around the user (mag), around the user's path (path), with "
+               "uniform samples (+cs)",
+       .modes = kIrrt,
+       .live = true},
+      &S::sampling, [](IrrtSampling m) { return to_string(m); }, parse_irrt_sampling));
+  t.push_back(real_param<S>(
+      {.name = "sigma",
+       .symbol = "σ",
+       .label = "shooting area",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "I-RRT: standard deviation of the Gaussian shooting area (0: 2% of the bounds' "
+               "diagonal)",
+       .modes = kIrrt,
+       .live = true},
+      &S::sigma));
+  t.push_back(
+      real_param<S>({.name = "force_mix",
+                     .label = "force mix",
+                     .min = 0.0,
+                     .max = 1.0,
+                     .help = "I-RRT: F_r = mix F_u + (1 - mix) F_a (the 2011 paper's alpha)",
+                     .modes = kIrrt,
+                     .live = true},
+                    &S::force_mix));
+  t.push_back(
+      integer_param<S>({.name = "neighbours",
+                        .symbol = "p",
+                        .label = "nodes near the user",
+                        .min = 1.0,
+                        .max = 10000.0,
+                        .help = "I-RRT: p, the nodes near the user whose centre of mass guides",
+                        .modes = kIrrt,
+                        .live = true},
+                       &S::neighbours));
+  t.push_back(integer_param<S>({.name = "uniform_every",
+                                .symbol = "x",
+                                .label = "uniform every",
+                                .min = 1.0,
+                                .max = 1000000.0,
+                                .help = "I-RRT +cs modes: one uniform sample every x shots",
+                                .modes = kIrrt,
+                                .live = true},
+                               &S::uniform_every));
+  return t;
+}
+
+}  // namespace
+
+const ParamTable<InteractionSettings>& interaction_parameters() {
+  static const ParamTable<InteractionSettings> kTable = make_table();
+  return kTable;
+}
+
+std::string_view to_string(IrrtSampling mode) {
+  static constexpr std::string_view kNames[] = {"mag", "path", "mag+cs", "path+cs"};
+  return kNames[static_cast<std::size_t>(mode)];
+}
+
+std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name) {
+  for (auto m :
+       {IrrtSampling::mag, IrrtSampling::path, IrrtSampling::mag_cs, IrrtSampling::path_cs}) {
+    if (to_string(m) == name)
+      return m;
+  }
+  return std::nullopt;
+}
+
+double contact_distance(const InteractionSettings& s, const SE3Space& space) {
+  return s.contact_distance > 0.0 ? s.contact_distance : 0.015 * space.translation_extent();
+}
+double contact_clearance(const InteractionSettings& s, const SE3Space& space) {
+  return s.contact_clearance > 0.0 ? s.contact_clearance : 0.1 * space.translation_step();
+}
+double sigma_translation(const InteractionSettings& s, const SE3Space& space) {
+  return s.sigma > 0.0 ? s.sigma : 0.02 * space.translation_extent();
+}
+
+}  // namespace tandem

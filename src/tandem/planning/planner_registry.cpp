@@ -1,0 +1,119 @@
+#include "tandem/planning/planner_registry.hpp"
+
+#include <stdexcept>
+
+#include "tandem/planning/irrt.hpp"
+#include "tandem/planning/rrt.hpp"
+#include "tandem/planning/rrt_connect.hpp"
+#include "tandem/sampling/authority_sharing.hpp"
+
+namespace tandem {
+namespace {
+
+std::unique_ptr<TargetSampler> sharing(const PlannerContext& c) {
+  return std::make_unique<AuthoritySharing>(c.validator.space(), *c.interaction,
+                                            c.settings.interaction, c.settings.seed);
+}
+
+std::unique_ptr<Planner> make_birrt(const PlannerContext& c) {
+  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, c.settings);
+}
+std::unique_ptr<Planner> make_rrt(const PlannerContext& c) {
+  return std::make_unique<RRT>(c.validator, c.start, c.goal, c.settings);
+}
+std::unique_ptr<Planner> make_interactive(const PlannerContext& c) {
+  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, c.settings, sharing(c));
+}
+std::unique_ptr<Planner> make_irrt(const PlannerContext& c) {
+  return std::make_unique<IRRT>(c.validator, c.start, c.goal, c.settings, *c.interaction);
+}
+
+const std::vector<PlannerEntry> kRegistry = {
+    {"birrt", "the computer alone: RRT-Connect (bidirectional RRT)", "Kuffner & LaValle, ICRA 2000",
+     false, nullptr, make_birrt},
+    {"rrt", "the computer alone: single-tree RRT with goal bias", "LaValle, TR 98-11, 1998", false,
+     nullptr, make_rrt},
+    {"interactive",
+     "authority sharing: RRT-Connect growing toward a uniform sample (probability alpha) or the "
+     "operator's q_device",
+     "Blin et al., IROS 2016, Algorithm 1", true,
+     [](PlannerSettings& s) { s.interaction.contact = false; }, make_interactive},
+    {"interactive-contact",
+     "authority sharing with contact sampling: near an obstacle, N samples on its tangent plane "
+     "with the operator's orientation",
+     "Blin et al., IROS 2016, Algorithm 3", true,
+     [](PlannerSettings& s) { s.interaction.contact = true; }, make_interactive},
+    {"irrt",
+     "the Interactive RRT: pseudo-forces, Gaussian shooting around the operator, node labels",
+     "Taix & Flavigne, ECMS 2011", true, nullptr, make_irrt},
+};
+
+}  // namespace
+
+const std::vector<PlannerEntry>& planner_registry() {
+  return kRegistry;
+}
+
+const PlannerEntry* find_planner(std::string_view name) {
+  for (const PlannerEntry& e : kRegistry) {
+    if (e.name == name)
+      return &e;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> planner_names() {
+  std::vector<std::string> names;
+  for (const PlannerEntry& e : kRegistry)
+    names.emplace_back(e.name);
+  return names;
+}
+
+std::string planner_names_text() {
+  std::string text;
+  for (const PlannerEntry& e : kRegistry)
+    text += (text.empty() ? "" : ", ") + std::string(e.name);
+  return text;
+}
+
+PlannerSettings default_settings(std::string_view name) {
+  PlannerSettings s;
+  const PlannerEntry* e = find_planner(name);
+  if (e != nullptr && e->preset != nullptr)
+    e->preset(s);
+  return s;
+}
+
+std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& validator,
+                                      const Config& start, const Config& goal,
+                                      const PlannerSettings& settings,
+                                      const Interaction* interaction) {
+  const PlannerEntry* e = find_planner(name);
+  if (e == nullptr) {
+    throw std::invalid_argument("unknown planner '" + std::string(name) +
+                                "' (known: " + planner_names_text() + ")");
+  }
+  const bool has_operator = interaction != nullptr && interaction->feed != nullptr;
+  if (e->uses_operator && !has_operator)
+    throw std::invalid_argument("planner '" + std::string(name) + "' needs an operator");
+  if (!e->uses_operator && interaction != nullptr) {
+    throw std::invalid_argument("planner '" + std::string(name) +
+                                "' cannot use an operator (it plans alone)");
+  }
+  return e->make({validator, start, goal, settings, interaction});
+}
+
+std::vector<const ParamSpec*> planner_tunables(std::string_view name) {
+  std::vector<const ParamSpec*> specs;
+  for (const auto& p : planner_parameters()) {
+    if (p.spec.used_by(name))
+      specs.push_back(&p.spec);
+  }
+  for (const auto& p : interaction_parameters()) {
+    if (p.spec.used_by(name))
+      specs.push_back(&p.spec);
+  }
+  return specs;
+}
+
+}  // namespace tandem

@@ -1,0 +1,64 @@
+#include "tandem/planning/planner_settings.hpp"
+
+namespace tandem {
+namespace {
+
+using S = PlannerSettings;
+
+ParamTable<S> make_table() {
+  const double inf = std::numeric_limits<double>::infinity();
+  ParamTable<S> t;
+  t.push_back(real_param<S>(
+      {.name = "range",
+       .label = "range",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Longest motion added per extension (0: the problem's, else 0.2 x the space's "
+               "extent)"},
+      &S::range));
+  t.push_back(
+      real_param<S>({.name = "goal_bias",
+                     .label = "goal bias",
+                     .min = 0.0,
+                     .max = 1.0,
+                     .help = "RRT's and the I-RRT's probability of extending toward the goal",
+                     .modes = {"rrt", "irrt"}},
+                    &S::goal_bias));
+  t.push_back(choice_param<S>(
+      {.name = "extend",
+       .label = "extension",
+       .choices = {"classic", "last-valid"},
+       .help = "How a tree grows toward a target it cannot reach: classic (all or nothing) or "
+               "last-valid (keep the last valid configuration, the papers' Add_Tree)"},
+      &S::extend, [](ExtendMode m) { return to_string(m); }, parse_extend_mode));
+  t.push_back(choice_param<S>(
+      {.name = "nearest_neighbors",
+       .label = "nearest neighbours",
+       .choices = {"kdtree", "linear"},
+       .help = "The trees' nearest-neighbour index: a k-d tree, or a linear scan"},
+      &S::nearest_neighbors, [](const std::string& n) { return n; },
+      [](const std::string& n) { return std::optional<std::string>(n); }));
+  return t;
+}
+
+}  // namespace
+
+const ParamTable<PlannerSettings>& planner_parameters() {
+  static const ParamTable<PlannerSettings> kTable = make_table();
+  return kTable;
+}
+
+std::string_view to_string(ExtendMode mode) {
+  return mode == ExtendMode::last_valid ? "last-valid" : "classic";
+}
+
+std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
+  if (name == "classic")
+    return ExtendMode::classic;
+  if (name == "last-valid")
+    return ExtendMode::last_valid;
+  return std::nullopt;
+}
+
+}  // namespace tandem

@@ -1,0 +1,48 @@
+#pragma once
+// The automatic planners' settings, declared once (planner_parameters()): the default member
+// initialisers are the defaults, the table gives ranges, units, help and the planners that use
+// each. The command line, problem files, experiments, the JSON output and the journal read them
+// from here.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "tandem/core/parameter.hpp"
+#include "tandem/interaction/interaction_settings.hpp"
+
+namespace tandem {
+
+/// How a tree grows toward a target it cannot reach in one collision-free motion.
+enum class ExtendMode : std::uint8_t {
+  classic,     ///< Kuffner & LaValle 2000: the whole step is valid or nothing is added (OMPL's
+               ///< RRTConnect)
+  last_valid,  ///< the papers' Add_Tree: the last valid configuration along the motion is added
+};
+
+/// "classic" or "last-valid" (the names the command line and scenario files use).
+std::string_view to_string(ExtendMode mode);
+std::optional<ExtendMode> parse_extend_mode(std::string_view name);
+
+struct PlannerSettings {
+  /// Longest motion added in one extension; 0 means 0.2 x the space's maximum extent (OMPL).
+  double range = 0.0;
+  /// RRT's and the I-RRT's probability of extending toward the goal, in [0, 1].
+  double goal_bias = 0.05;
+  /// The run's only source of randomness.
+  std::uint64_t seed = 1;
+  ExtendMode extend = ExtendMode::classic;
+  /// "kdtree" or "linear".
+  std::string nearest_neighbors = "kdtree";
+  /// Measure the time spent in collision checks and nearest-neighbour queries.
+  bool profile = false;
+  /// The interactive planners' tunables (interaction_parameters()).
+  InteractionSettings interaction;
+};
+
+/// The declarations of PlannerSettings' tunable fields (range, goal_bias, extend,
+/// nearest_neighbors); the seed is the run's, not a tunable.
+const ParamTable<PlannerSettings>& planner_parameters();
+
+}  // namespace tandem

@@ -1,0 +1,61 @@
+#include "tandem/sampling/authority_sharing.hpp"
+
+#include <stdexcept>
+
+#include "tandem/sampling/contact_sampler.hpp"
+
+namespace tandem {
+
+AuthoritySharing::AuthoritySharing(const SE3Space& space, const Interaction& interaction,
+                                   const InteractionSettings& settings, std::uint64_t seed)
+    : space_(space),
+      interaction_(interaction),
+      settings_(settings),
+      authority_rng_(seed ^ 0xa5a5a5a5deadbeefULL),
+      contact_rng_(seed ^ 0x5a5a5a5a12345678ULL) {
+  if (interaction.feed == nullptr)
+    throw std::invalid_argument("authority sharing needs an operator (an OperatorFeed)");
+}
+
+void AuthoritySharing::sample(const SampleRequest& request, std::vector<Target>& out) {
+  const InteractionSettings& s =
+      interaction_.parameters != nullptr ? interaction_.parameters->latest() : settings_;
+  // Steps 1-2: the operator has authority when a > alpha.
+  if (authority_rng_.uniform01() > s.alpha) {
+    const OperatorState* op = interaction_.feed->at(request.iteration, request.roadmap);
+    if (op != nullptr) {
+      ++stats_.operator_iterations;
+      if (contact_sampling(*op, s, out))
+        return;
+      // Step 9.
+      out.push_back({op->device.q_device, NodeSource::operator_});
+      return;
+    }
+  }
+  // Step 3.
+  out.push_back({space_.sample_uniform(*request.rng), NodeSource::random});
+}
+
+bool AuthoritySharing::contact_sampling(const OperatorState& op, const InteractionSettings& s,
+                                        std::vector<Target>& out) {
+  const auto& frame = op.frame;
+  if (!s.contact || !frame || frame->distance > contact_distance(s, space_))
+    return false;
+  // Step 7: ContactSampling(P_o, P_n, N, q_device).
+  ++stats_.contact_entries;
+  const double clearance = contact_clearance(s, space_);
+  const std::size_t before = out.size();
+  for (int i = 0; i < s.contact_samples; ++i) {
+    if (auto q = sample_contact(*frame, op.device.q_device.q, space_, clearance, contact_rng_))
+      out.push_back({*q, NodeSource::contact});
+  }
+  return out.size() > before;
+}
+
+SamplerStats AuthoritySharing::stats() const {
+  SamplerStats s = stats_;
+  s.operator_time_s = interaction_.feed->operator_seconds();
+  return s;
+}
+
+}  // namespace tandem

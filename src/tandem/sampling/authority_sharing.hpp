@@ -1,0 +1,50 @@
+#pragma once
+// Authority sharing over an operator feed, with contact sampling as a strategy inside it:
+//   N. Blin, M. Taix, P. Fillatreau, J.-Y. Fourquet, "I-RRT-C: Interactive Motion Planning with
+//   Contact", IROS 2016, Algorithms 1-3, and "Tuning Interaction in Motion Planning with Contact".
+//
+// Algorithm 3 (Add_Tree's targets), each iteration:
+//   1. a <- rand(0, 1)
+//   2. if a <= alpha:                            the computer has authority
+//   3.     q_rand <- a uniform sample
+//   4. else:                                     the operator has authority
+//   5.     read q_device and the nearest obstacle (P_o, P_n) from the operator's state
+//   6.     if contact sampling is on and dist(q_device, obstacle) <= d:
+//   7.         {q_i} <- ContactSampling(P_o, P_n, N, q_device)    (Algorithm 2)
+//   8.     else:
+//   9.         q_rand <- q_device
+// Without an operator state yet, step 3 is taken. The authority draw and the contact samples have
+// random streams of their own, so the computer's samples are those of BiRRT for the same seed.
+//
+// Threading: the planner thread only; the live settings are read wait-free each iteration.
+
+#include <optional>
+
+#include "tandem/interaction/interaction.hpp"
+#include "tandem/sampling/target_sampler.hpp"
+
+namespace tandem {
+
+class AuthoritySharing final : public TargetSampler {
+ public:
+  /// `interaction.feed` is required; without `interaction.parameters`, `settings` hold throughout.
+  AuthoritySharing(const SE3Space& space, const Interaction& interaction,
+                   const InteractionSettings& settings, std::uint64_t seed);
+
+  void sample(const SampleRequest& request, std::vector<Target>& out) override;
+  SamplerStats stats() const override;
+
+ private:
+  /// Steps 6-7: contact samples, or nothing when not in contact mode.
+  bool contact_sampling(const OperatorState& op, const InteractionSettings& s,
+                        std::vector<Target>& out);
+
+  const SE3Space& space_;
+  Interaction interaction_;
+  InteractionSettings settings_;
+  Rng authority_rng_;  ///< the authority draws, apart from the sampling stream
+  Rng contact_rng_;    ///< contact samples
+  SamplerStats stats_;
+};
+
+}  // namespace tandem
