@@ -66,15 +66,76 @@ std::string now_text() {
   return buf;
 }
 
-int run_bench(const BenchArgs& args) {
-  const Experiment experiment = load_experiment(args.experiment);
+Problem experiment_problem(const BenchArgs& args, const Experiment& experiment) {
   ProblemArgs problem_args;
   problem_args.allowed_dirs = args.allowed_dirs;
   // A problem file relative to the experiment file, else a built-in scene's name.
   const std::filesystem::path relative = experiment.base_dir / experiment.problem;
   problem_args.problem = std::filesystem::exists(relative) ? relative.string() : experiment.problem;
-  const Problem problem = load_problem(problem_args);
+  return load_problem(problem_args);
+}
 
+/// --report-only: the experiment's runs already recorded.
+BenchResult recorded_runs(const BenchArgs& args, const Experiment& experiment,
+                          const BenchOptions& options) {
+  const auto file = options.out_dir / "runs.jsonl";
+  if (!std::filesystem::exists(file))
+    throw InputError(file.string(), "does not exist: run the experiment first");
+  const std::vector<RunRecord> all = read_records(file);
+  const std::uint64_t seeds = args.seeds.value_or(experiment.seeds);
+  BenchResult result;
+  for (const RunConfig& c : experiment.configs) {
+    for (const RunRecord& r : all) {
+      if (r.config == c.label() && r.seed >= experiment.seed_start &&
+          r.seed < experiment.seed_start + seeds)
+        result.records.push_back(r);
+    }
+  }
+  return result;
+}
+
+BenchResult run_runs(const BenchArgs& args, const Experiment& experiment, const Problem& problem,
+                     const BenchOptions& options) {
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  if (!args.quiet) {
+    std::cerr << "tandem bench: " << experiment.name << " on " << problem.name << ", "
+              << experiment.configs.size() << " configurations x "
+              << args.seeds.value_or(experiment.seeds) << " seeds, " << options.jobs << " workers, "
+              << experiment.time_limit << " s per run; results in " << options.out_dir.string()
+              << '\n';
+  }
+  BenchResult result = run_experiment(experiment, problem, options);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return result;
+}
+
+int summarise(const BenchArgs& args, const Experiment& experiment, const BenchResult& result,
+              const std::filesystem::path& out_dir, const ReportFiles& report) {
+  std::size_t solved = 0, valid = 0;
+  for (const RunRecord& r : result.records) {
+    solved += r.solved ? 1 : 0;
+    valid += r.path_valid ? 1 : 0;
+  }
+  std::cout << experiment.name << ": " << result.records.size() << " runs recorded";
+  if (!args.report_only)
+    std::cout << " (" << result.ran << " now, " << result.resumed << " before)";
+  std::cout << ", " << solved << " solved, " << valid << " solutions valid\n"
+            << "runs: " << (out_dir / "runs.jsonl").string() << "\n"
+            << "OMPL benchmark log: " << (out_dir / "ompl.log").string()
+            << " (ompl_benchmark_statistics ompl.log -d results.db, then Planner Arena)\n"
+            << "report: " << report.markdown.string() << '\n';
+  if (result.interrupted) {
+    std::cout << "interrupted: run the same command again to resume\n";
+    return 130;
+  }
+  return valid == solved ? 0 : 1;
+}
+
+int run_bench(const BenchArgs& args) {
+  const Experiment experiment = load_experiment(args.experiment);
+  const Problem problem = experiment_problem(args, experiment);
   BenchOptions options;
   options.out_dir = args.out.empty() ? std::filesystem::path("bench-results") / experiment.name
                                      : std::filesystem::path(args.out);
@@ -83,40 +144,12 @@ int run_bench(const BenchArgs& args) {
   options.stop = &g_stop;
   options.progress = args.quiet ? nullptr : &std::cerr;
   options.live_progress = isatty(STDERR_FILENO) != 0;
-
   std::string command = "tandem bench " + args.experiment;
   if (args.seeds)
     command += " --seeds " + std::to_string(*args.seeds);
 
-  BenchResult result;
-  if (args.report_only) {
-    const auto file = options.out_dir / "runs.jsonl";
-    if (!std::filesystem::exists(file))
-      throw InputError(file.string(), "does not exist: run the experiment first");
-    const std::vector<RunRecord> all = read_records(file);
-    const std::uint64_t seeds = args.seeds.value_or(experiment.seeds);
-    for (const RunConfig& c : experiment.configs) {
-      for (const RunRecord& r : all) {
-        if (r.config == c.label() && r.seed >= experiment.seed_start &&
-            r.seed < experiment.seed_start + seeds)
-          result.records.push_back(r);
-      }
-    }
-  } else {
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
-    if (!args.quiet) {
-      std::cerr << "tandem bench: " << experiment.name << " on " << problem.name << ", "
-                << experiment.configs.size() << " configurations x "
-                << args.seeds.value_or(experiment.seeds) << " seeds, " << options.jobs
-                << " workers, " << experiment.time_limit << " s per run; results in "
-                << options.out_dir.string() << '\n';
-    }
-    result = run_experiment(experiment, problem, options);
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
-
+  const BenchResult result = args.report_only ? recorded_runs(args, experiment, options)
+                                              : run_runs(args, experiment, problem, options);
   OmplLogHeader header;
   header.version = TANDEM_VERSION;
   header.hostname = host_name();
@@ -128,25 +161,7 @@ int run_bench(const BenchArgs& args) {
                         format_ompl_log(experiment, problem, result.records, header));
   const ReportFiles report =
       write_report(experiment, problem, result.records, options.out_dir, command);
-
-  std::size_t solved = 0, valid = 0;
-  for (const RunRecord& r : result.records) {
-    solved += r.solved ? 1 : 0;
-    valid += r.path_valid ? 1 : 0;
-  }
-  std::cout << experiment.name << ": " << result.records.size() << " runs recorded";
-  if (!args.report_only)
-    std::cout << " (" << result.ran << " now, " << result.resumed << " before)";
-  std::cout << ", " << solved << " solved, " << valid << " solutions valid\n"
-            << "runs: " << (options.out_dir / "runs.jsonl").string() << "\n"
-            << "OMPL benchmark log: " << (options.out_dir / "ompl.log").string()
-            << " (ompl_benchmark_statistics ompl.log -d results.db, then Planner Arena)\n"
-            << "report: " << report.markdown.string() << '\n';
-  if (result.interrupted) {
-    std::cout << "interrupted: run the same command again to resume\n";
-    return 130;
-  }
-  return valid == solved ? 0 : 1;
+  return summarise(args, experiment, result, options.out_dir, report);
 }
 
 }  // namespace

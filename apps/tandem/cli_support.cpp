@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "tandem/core/error.hpp"
+#include "tandem/runs/run_spec.hpp"
 
 namespace tandem::cli {
 
@@ -21,7 +22,9 @@ Problem load_problem(const ProblemArgs& args) {
   ProblemLoadOptions options;
   for (const auto& d : args.allowed_dirs)
     options.allowed_dirs.emplace_back(d);
-  return tandem::load_problem(args.problem, options);
+  Problem problem = tandem::load_problem(args.problem, options);
+  check_hints(problem.hints, problem.source);
+  return problem;
 }
 
 void require_valid_endpoints(const Problem& problem, CollisionChecker& checker) {

@@ -20,10 +20,12 @@ std::string option_help(const Param<RunSpec>& p) {
   if (p.spec.kind == ParamKind::real || p.spec.kind == ParamKind::integer ||
       p.spec.kind == ParamKind::choice)
     h += "; " + describe_range(p.spec);
-  if (!p.spec.modes.empty()) {
+  if (!p.spec.group.empty()) {
     h += "; for";
-    for (std::string_view m : p.spec.modes)
-      h += " " + std::string(m);
+    for (const PlannerEntry& e : planner_registry()) {
+      if (planner_uses(e.name, p.spec))
+        h += " " + std::string(e.name);
+    }
   }
   return h + ")";
 }

@@ -1,5 +1,6 @@
 #include "tandem/collision/collision_checker.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -11,13 +12,9 @@
 namespace tandem {
 namespace {
 
+using test::at;
 using test::box_body;
-
-Config at(double x, double y, double z) {
-  Config q;
-  q.t = {x, y, z};
-  return q;
-}
+using ::testing::HasSubstr;
 
 /// A unit cube object between a box "left" (x <= -1) and a sphere "right" centred at x = 3.
 Scene two_obstacles() {
@@ -172,10 +169,13 @@ TEST(CollisionChecker, ClonesShareGeometryButNotCounters) {
 TEST(CollisionChecker, RejectsNonsensicalPrimitives) {
   Scene s = two_obstacles();
   s.obstacles[1].parts[0].geometry = Sphere{-1.0};
-  EXPECT_THROW(CollisionChecker{s}, InputError);
+  EXPECT_THAT(test::error_message<InputError>([&] { return CollisionChecker{s}; }),
+              HasSubstr("obstacle 'right': sphere radius must be a positive finite number, got "
+                        "-1.000000"));
   Scene t = two_obstacles();
   t.object.parts.clear();
-  EXPECT_THROW(CollisionChecker{t}, InputError);
+  EXPECT_THAT(test::error_message<InputError>([&] { return CollisionChecker{t}; }),
+              HasSubstr("object 'cube': the moving object has no geometry"));
 }
 
 TEST(CollisionChecker, ReportsInfiniteDistanceWithoutObstacles) {

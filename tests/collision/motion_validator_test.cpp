@@ -4,22 +4,13 @@
 
 #include <numbers>
 
-#include "support/test_support.hpp"
+#include "support/problems.hpp"
 
 namespace tandem {
 namespace {
 
-struct Fixture {
-  Problem problem = test::wall_with_gap_problem();
-  CollisionChecker checker{problem.scene};
-  MotionValidator validator{problem.space, checker};
-};
-
-Config at(double x, double y, double z = 0.0) {
-  Config q;
-  q.t = {x, y, z};
-  return q;
-}
+using Fixture = test::ProblemFixture;
+using test::at;
 
 TEST(MotionValidator, AcceptsMotionsThroughTheGapAndRejectsThoseThroughTheWall) {
   Fixture f;

@@ -73,9 +73,13 @@ TEST(PathFile, ReportsMalformedLines) {
 
 TEST(PathFile, ReportsMissingFiles) {
   test::TempDir dir;
-  EXPECT_THROW(read_path_file(dir.path() / "none.path", space3()), InputError);
-  EXPECT_THROW(write_path_file(dir.path() / "no" / "such" / "folder.path", {Config{}}, space3()),
-               InputError);
+  EXPECT_THAT(test::error_message<InputError>(
+                  [&] { return read_path_file(dir.path() / "none.path", space3()); }),
+              HasSubstr("none.path: no such file"));
+  EXPECT_THAT(test::error_message<InputError>([&] {
+                write_path_file(dir.path() / "no" / "such" / "folder.path", {Config{}}, space3());
+              }),
+              HasSubstr("folder.path: cannot be written"));
 }
 
 }  // namespace

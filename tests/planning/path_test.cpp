@@ -2,24 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include "support/test_support.hpp"
+#include "support/problems.hpp"
 #include "tandem/planning/planner.hpp"
 #include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
 
-Config at(double x, double y, double z = 0.0) {
-  Config q;
-  q.t = {x, y, z};
-  return q;
-}
-
-struct Fixture {
-  Problem problem = test::wall_with_gap_problem();
-  CollisionChecker checker{problem.scene};
-  MotionValidator validator{problem.space, checker};
-};
+using Fixture = test::ProblemFixture;
+using test::at;
 
 TEST(Path, LengthSumsTheMetric) {
   Fixture f;

@@ -87,15 +87,5 @@ TEST(MeshLoader, RejectsMalformedFiles) {
   expect_rejected(dir.write("bad.obj", "v 0 0 0\nf 1 2 3\n"), "");
 }
 
-TEST(SanitizeMesh, RejectsOutOfRangeIndicesAndNonFiniteVertices) {
-  TriangleMesh m;
-  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  m.triangles = {{0, 1, 3}};
-  EXPECT_THROW(sanitize_mesh(m, "m"), InputError);
-  m.triangles = {{0, 1, 2}};
-  m.vertices[1].x() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(sanitize_mesh(m, "m"), InputError);
-}
-
 }  // namespace
 }  // namespace tandem

@@ -7,6 +7,7 @@
 
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/runs/run_spec.hpp"
 
 namespace tandem {
 namespace {
@@ -82,8 +83,11 @@ struct ScenarioDir {
               "<robot name='f'><link name='a'><collision><geometry><box size='1 1 1'/></geometry>"
               "</collision></link></robot>");
   }
+  /// Loads the scenario and checks its [planner] tunables, as every command does.
   Problem load(const std::string& text) const {
-    return load_scenario_file(dir.write("s.toml", text), FileAccess{{dir.path()}});
+    Problem p = load_scenario_file(dir.write("s.toml", text), FileAccess{{dir.path()}});
+    check_hints(p.hints, p.source);
+    return p;
   }
   /// The error for a scenario that is kScenario with `from` replaced by `to`.
   std::string error(const std::string& from, const std::string& to) const {
@@ -126,16 +130,18 @@ TEST(ScenarioFile, ReadsEveryKindOfGeometry) {
   EXPECT_TRUE(p.goal.t.isApprox(Eigen::Vector3d(4, 0, 1)));
   EXPECT_NEAR(SE3Space::yaw(p.goal.q), std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(p.hints.planner, "rrt");
-  EXPECT_EQ(p.hints.extend, "last-valid");
-  EXPECT_DOUBLE_EQ(p.hints.range.at("rrt"), 0.5);
-  EXPECT_DOUBLE_EQ(*p.hints.goal_bias, 0.1);
   EXPECT_EQ(*p.hints.seed, 42u);
+  EXPECT_DOUBLE_EQ(*p.hints.time_limit, 5.0);
+  const RunSpec spec = default_spec("rrt", p.hints);
+  EXPECT_EQ(spec.settings.extend, ExtendMode::last_valid);
+  EXPECT_DOUBLE_EQ(spec.settings.range, 0.5);
+  EXPECT_DOUBLE_EQ(spec.settings.goal_bias, 0.1);
 }
 
 TEST(ScenarioFile, ReportsUnknownKeysWithTheirLine) {
   ScenarioDir s;
   EXPECT_THAT(s.error("[planner]\n", "[planner]\nrnage = 3\n"),
-              HasSubstr("s.toml:50: unknown key 'rnage' in scenario.planner"));
+              HasSubstr("s.toml:50: unknown parameter 'rnage' (known: range, "));
   EXPECT_THAT(s.error("name = \"pillar\"", "name = \"pillar\"\nradius = 3"),
               HasSubstr("unknown key 'radius'"));
 }
@@ -173,10 +179,13 @@ TEST(ScenarioFile, ReportsValuesOfTheWrongTypeOrRange) {
   EXPECT_THAT(s.error("resolution = 0.02", "resolution = 2"), HasSubstr("resolution"));
   EXPECT_THAT(s.error("seed = 42", "seed = -1"), HasSubstr("seed must be a non-negative integer"));
   EXPECT_THAT(s.error("goal_bias = 0.1", "goal_bias = 1.5"),
-              HasSubstr("goal_bias must be in [0, 1]"));
-  EXPECT_THAT(s.error("name = \"rrt\"", "name = \"prm\""), HasSubstr("planner.name must be"));
+              HasSubstr("goal_bias must be a number in [0, 1], not 1.5"));
+  EXPECT_THAT(s.error("name = \"rrt\"", "name = \"prm\""),
+              HasSubstr("planner.name: unknown planner 'prm' (known: birrt, rrt"));
   EXPECT_THAT(s.error("extend = \"last-valid\"", "extend = \"lazy\""),
-              HasSubstr("planner.extend must be"));
+              HasSubstr("extend must be one of classic, last-valid, not 'lazy'"));
+  EXPECT_THAT(s.error("goal_bias = 0.1", "goal_bias = 0.1\nalpha = nan"),
+              HasSubstr("alpha must be a number in [0, 1], not nan"));
   EXPECT_THAT(s.error("scale = 2.0", "scale = 0"), HasSubstr("scale must be positive"));
   EXPECT_THAT(s.error("rpy_deg = [10, 0, 0]", "rpy_deg = [10, 0, 0]\nquaternion = [0, 0, 0, 1]"),
               HasSubstr("more than once"));
@@ -223,7 +232,8 @@ position = [9, 4]
 
 TEST(ScenarioFile, RefusesTiltsInPlanarScenes) {
   ScenarioDir s;
-  EXPECT_THROW(s.load(R"(
+  EXPECT_THAT(test::error_message<InputError>([&] {
+                return s.load(R"(
 [space]
 kind = "planar"
 min = [0, 0]
@@ -235,8 +245,9 @@ position = [1, 1]
 rpy_deg = [0, 30, 0]
 [goal]
 position = [9, 4]
-)"),
-               InputError);
+)");
+              }),
+              HasSubstr("must rotate about z only in a planar space (use yaw_deg)"));
 }
 
 }  // namespace

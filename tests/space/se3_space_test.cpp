@@ -1,5 +1,6 @@
 #include "tandem/space/se3_space.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -7,10 +8,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
 
 namespace tandem {
 namespace {
+
+using ::testing::HasSubstr;
 
 const SE3Space& space3() {
   static const SE3Space s(SpaceKind::se3, Bounds{{-10, -5, -2}, {10, 5, 2}});
@@ -195,12 +199,29 @@ TEST(PlanarSpace, MetricEqualsOmplSE2) {
 }
 
 TEST(SE3Space, RejectsInvalidArguments) {
-  EXPECT_THROW(SE3Space(SpaceKind::se3, Bounds{{1, 0, 0}, {0, 1, 1}}), InputError);
-  EXPECT_THROW(SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, {}, 0.0), InputError);
-  EXPECT_THROW(SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, {}, 1.5), InputError);
-  EXPECT_THROW(SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, MetricWeights{0.0, 0.5}),
-               InputError);
-  EXPECT_THROW(SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {0, 0, 0}}), InputError);
+  auto error = [](auto make) { return test::error_message<InputError>(make); };
+  EXPECT_THAT(
+      error([] {
+        return SE3Space(SpaceKind::se3, Bounds{{1, 0, 0}, {0, 1, 1}});
+      }),
+      HasSubstr("bounds: invalid workspace bounds: min (1 0 0) must not exceed max (0 1 1)"));
+  EXPECT_THAT(error([] {
+                return SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, {}, 0.0);
+              }),
+              HasSubstr("resolution: must be in (0, 1), got 0"));
+  EXPECT_THAT(error([] {
+                return SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, {}, 1.5);
+              }),
+              HasSubstr("resolution: must be in (0, 1), got 1.5"));
+  EXPECT_THAT(
+      error([] {
+        return SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, MetricWeights{0.0, 0.5});
+      }),
+      HasSubstr("weights: translation weight must be > 0 and rotation weight >= 0"));
+  EXPECT_THAT(error([] {
+                return SE3Space(SpaceKind::se3, Bounds{{0, 0, 0}, {0, 0, 0}});
+              }),
+              HasSubstr("bounds: the workspace bounds have zero extent"));
 }
 
 }  // namespace

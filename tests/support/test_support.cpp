@@ -13,6 +13,13 @@ extern char** environ;
 
 namespace tandem::test {
 
+Config at(double x, double y, double z, double yaw) {
+  Config q;
+  q.t = {x, y, z};
+  q.q = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+  return q;
+}
+
 Body box_body(const std::string& name, const Eigen::Vector3d& size,
               const Eigen::Vector3d& position) {
   Body b;

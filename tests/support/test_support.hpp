@@ -5,11 +5,29 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tandem/scene/problem.hpp"
 
 namespace tandem::test {
+
+/// A configuration at (x, y, z), turned by `yaw` about z.
+Config at(double x, double y, double z = 0.0, double yaw = 0.0);
+
+/// The message of the `E` that `f()` throws, for EXPECT_THAT(..., HasSubstr(...)). Another
+/// exception propagates (and fails the test); if nothing is thrown, a failure is added and the
+/// result is "(nothing was thrown)".
+template <class E, class F>
+std::string error_message(F&& f) {
+  try {
+    (void)std::forward<F>(f)();
+  } catch (const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an exception, nothing was thrown";
+  return "(nothing was thrown)";
+}
 
 /// An axis-aligned box obstacle.
 Body box_body(const std::string& name, const Eigen::Vector3d& size,

@@ -1,9 +1,11 @@
 #include "tandem/core/parameter.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace tandem {
 namespace {
@@ -64,10 +66,6 @@ std::string ParamSpec::option() const {
   std::string o = "--" + std::string(name);
   std::replace(o.begin(), o.end(), '_', '-');
   return o;
-}
-
-bool ParamSpec::used_by(std::string_view planner) const {
-  return modes.empty() || std::find(modes.begin(), modes.end(), planner) != modes.end();
 }
 
 std::string describe_range(const ParamSpec& s) {
@@ -131,7 +129,8 @@ std::variant<ParamValue, std::string> parse_param_text(const ParamSpec& s, std::
     const std::string copy(text);
     char* end = nullptr;
     const double v = std::strtod(copy.c_str(), &end);
-    if (copy.empty() || end != copy.c_str() + copy.size())
+    if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0])) != 0 ||
+        end != copy.c_str() + copy.size())
       return fault(s, "'" + copy + "'");
     value = v;
   } else if (s.kind == ParamKind::boolean) {

@@ -45,14 +45,14 @@ struct ParamSpec {
   bool min_open = false;  ///< (min, max] instead of [min, max]
   std::vector<std::string_view> choices;
   std::string_view help;
-  /// The planners (registry names) that use it; empty: every planner.
-  std::vector<std::string_view> modes;
+  /// The group of tunables it belongs to ("sharing", "irrt", "operator", ...; empty: every tree
+  /// planner's). Each planner of the registry lists the groups it reads.
+  std::string_view group;
   /// May change while planning (the viewer's tuning panel).
   bool live = false;
 
   /// The command-line option: "--" and the name with '_' as '-'.
   std::string option() const;
-  bool used_by(std::string_view planner) const;
 };
 
 /// "a number in [0, 1]", "a whole number of at least 1", "one of mag, path", ...

@@ -57,16 +57,12 @@ std::string ompl_status_name(const std::string& s) {
   return "Unknown status";
 }
 
-std::string format_ompl_log(const Experiment& experiment, const Problem& problem,
-                            const std::vector<RunRecord>& records, const OmplLogHeader& header) {
-  std::map<std::string, std::vector<const RunRecord*>> by_config;
-  std::size_t max_runs = 0;
-  for (const RunRecord& r : records)
-    by_config[r.config].push_back(&r);
-  for (const auto& [k, v] : by_config)
-    max_runs = std::max(max_runs, v.size());
+namespace {
 
-  std::ostringstream o;
+/// The experiment's part of the log: version, properties, host, the configurations, the limits,
+/// the status enum.
+void write_experiment(std::ostream& o, const Experiment& experiment, const Problem& problem,
+                      const OmplLogHeader& header, std::size_t max_runs) {
   o << "tandem version " << header.version << '\n';
   o << "Experiment " << one_line(experiment.name) << '\n';
   o << "2 experiment properties\n";
@@ -96,12 +92,10 @@ std::string format_ompl_log(const Experiment& experiment, const Problem& problem
   for (const auto& n : status_names())
     o << '|' << n;
   o << '\n';
+}
 
-  std::size_t planners = 0;
-  for (const RunConfig& c : experiment.configs)
-    planners += by_config.count(c.label());
-  o << planners << " planners\n";
-
+/// One configuration as an OMPL "planner": its common properties and one line per run.
+void write_planner(std::ostream& o, const RunConfig& c, const std::vector<const RunRecord*>& runs) {
   static const char* kProperties[] = {"time REAL",
                                       "solved BOOLEAN",
                                       "status ENUM",
@@ -118,30 +112,46 @@ std::string format_ompl_log(const Experiment& experiment, const Problem& problem
                                       "nodes contact INTEGER",
                                       "operator iterations INTEGER",
                                       "contact entries INTEGER"};
+  o << "tandem " << one_line(c.label()) << '\n';
+  o << c.values.size() << " common properties\n";
+  for (const auto& [k, v] : c.values)
+    o << k << " = " << one_line(format_param(v)) << '\n';
+  o << std::size(kProperties) << " properties for each run\n";
+  for (const char* p : kProperties)
+    o << p << '\n';
+  o << runs.size() << " runs\n";
+  for (const RunRecord* r : runs) {
+    const auto src = [&](NodeSource s) { return r->nodes_by_source[static_cast<std::size_t>(s)]; };
+    o << real(r->time_s) << "; " << (r->solved ? 1 : 0) << "; " << status_index(r->status)
+      << "; 0; " << (r->path_valid ? 1 : 0) << "; " << (r->solved ? real(r->path_length) : "")
+      << "; " << r->nodes << "; " << r->edges << "; " << r->iterations << "; "
+      << r->collision_checks << "; " << r->seed << "; " << src(NodeSource::random) << "; "
+      << src(NodeSource::operator_) << "; " << src(NodeSource::contact) << "; "
+      << r->operator_iterations << "; " << r->contact_entries << "; \n";
+  }
+  o << ".\n";
+}
+
+}  // namespace
+
+std::string format_ompl_log(const Experiment& experiment, const Problem& problem,
+                            const std::vector<RunRecord>& records, const OmplLogHeader& header) {
+  std::map<std::string, std::vector<const RunRecord*>> by_config;
+  std::size_t max_runs = 0;
+  for (const RunRecord& r : records)
+    by_config[r.config].push_back(&r);
+  for (const auto& [k, v] : by_config)
+    max_runs = std::max(max_runs, v.size());
+  std::ostringstream o;
+  write_experiment(o, experiment, problem, header, max_runs);
+  std::size_t planners = 0;
+  for (const RunConfig& c : experiment.configs)
+    planners += by_config.count(c.label());
+  o << planners << " planners\n";
   for (const RunConfig& c : experiment.configs) {
     auto it = by_config.find(c.label());
-    if (it == by_config.end())
-      continue;
-    o << "tandem " << one_line(c.label()) << '\n';
-    o << c.values.size() << " common properties\n";
-    for (const auto& [k, v] : c.values)
-      o << k << " = " << one_line(format_param(v)) << '\n';
-    o << std::size(kProperties) << " properties for each run\n";
-    for (const char* p : kProperties)
-      o << p << '\n';
-    o << it->second.size() << " runs\n";
-    for (const RunRecord* r : it->second) {
-      const auto src = [&](NodeSource s) {
-        return r->nodes_by_source[static_cast<std::size_t>(s)];
-      };
-      o << real(r->time_s) << "; " << (r->solved ? 1 : 0) << "; " << status_index(r->status)
-        << "; 0; " << (r->path_valid ? 1 : 0) << "; " << (r->solved ? real(r->path_length) : "")
-        << "; " << r->nodes << "; " << r->edges << "; " << r->iterations << "; "
-        << r->collision_checks << "; " << r->seed << "; " << src(NodeSource::random) << "; "
-        << src(NodeSource::operator_) << "; " << src(NodeSource::contact) << "; "
-        << r->operator_iterations << "; " << r->contact_entries << "; \n";
-    }
-    o << ".\n";
+    if (it != by_config.end())
+      write_planner(o, c, it->second);
   }
   return o.str();
 }

@@ -1,17 +1,17 @@
 #include "tandem/interaction/interaction_settings.hpp"
 
+// The tables name only the fields of a ParamSpec that matter for each tunable (designated
+// initializers); the others keep their defaults, which GCC's -Wextra would warn about.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
 namespace tandem {
 namespace {
 
 using S = InteractionSettings;
 
-// The planners (registry names) each group of tunables belongs to.
-const std::vector<std::string_view> kSharing = {"interactive", "interactive-contact"};
-const std::vector<std::string_view> kIrrt = {"irrt"};
-
-ParamTable<S> make_table() {
+/// Authority sharing and contact sampling (Blin et al. 2016).
+void add_sharing(ParamTable<S>& t) {
   const double inf = std::numeric_limits<double>::infinity();
-  ParamTable<S> t;
   t.push_back(real_param<S>(
       {.name = "alpha",
        .symbol = "α",
@@ -20,14 +20,14 @@ ParamTable<S> make_table() {
        .max = 1.0,
        .help = "Authority sharing: the probability that the computer (a uniform sample) has "
                "authority in an iteration; else the operator has it (Blin et al. 2016, Alg. 1)",
-       .modes = kSharing,
+       .group = "sharing",
        .live = true},
       &S::alpha));
   t.push_back(boolean_param<S>(
       {.name = "contact",
        .label = "contact sampling",
        .help = "Contact sampling near obstacles (Alg. 3); on by default in interactive-contact",
-       .modes = kSharing,
+       .group = "sharing",
        .live = true},
       &S::contact));
   t.push_back(integer_param<S>(
@@ -37,7 +37,7 @@ ParamTable<S> make_table() {
        .min = 1.0,
        .max = 100000.0,
        .help = "Samples on the tangent plane each time contact mode is entered (the papers' 10)",
-       .modes = kSharing,
+       .group = "sharing",
        .live = true},
       &S::contact_samples));
   t.push_back(real_param<S>(
@@ -49,7 +49,7 @@ ParamTable<S> make_table() {
        .max = inf,
        .help = "Contact mode within this distance of an obstacle (0: 1.5% of the bounds' "
                "diagonal)",
-       .modes = kSharing,
+       .group = "sharing",
        .live = true},
       &S::contact_distance));
   t.push_back(real_param<S>(
@@ -60,16 +60,21 @@ ParamTable<S> make_table() {
        .max = inf,
        .help = "Gap between contact samples and the tangent plane (0: 0.1 x the motion "
                "checker's translation step)",
-       .modes = kSharing,
+       .group = "sharing",
        .live = true},
       &S::contact_clearance));
+}
+
+/// The I-RRT (Taix & Flavigne 2011).
+void add_irrt(ParamTable<S>& t) {
+  const double inf = std::numeric_limits<double>::infinity();
   t.push_back(choice_param<S>(
       {.name = "sampling",
        .label = "I-RRT sampling",
        .choices = {"mag", "path", "mag+cs", "path+cs"},
        .help = "I-RRT sampling mode: around the user (mag), around the user's path (path), with "
                "uniform samples (+cs)",
-       .modes = kIrrt,
+       .group = "irrt",
        .live = true},
       &S::sampling, [](IrrtSampling m) { return to_string(m); }, parse_irrt_sampling));
   t.push_back(real_param<S>(
@@ -81,7 +86,7 @@ ParamTable<S> make_table() {
        .max = inf,
        .help = "I-RRT: standard deviation of the Gaussian shooting area (0: 2% of the bounds' "
                "diagonal)",
-       .modes = kIrrt,
+       .group = "irrt",
        .live = true},
       &S::sigma));
   t.push_back(
@@ -90,7 +95,7 @@ ParamTable<S> make_table() {
                      .min = 0.0,
                      .max = 1.0,
                      .help = "I-RRT: F_r = mix F_u + (1 - mix) F_a (the 2011 paper's alpha)",
-                     .modes = kIrrt,
+                     .group = "irrt",
                      .live = true},
                     &S::force_mix));
   t.push_back(
@@ -100,7 +105,7 @@ ParamTable<S> make_table() {
                         .min = 1.0,
                         .max = 10000.0,
                         .help = "I-RRT: p, the nodes near the user whose centre of mass guides",
-                        .modes = kIrrt,
+                        .group = "irrt",
                         .live = true},
                        &S::neighbours));
   t.push_back(integer_param<S>({.name = "uniform_every",
@@ -109,9 +114,15 @@ ParamTable<S> make_table() {
                                 .min = 1.0,
                                 .max = 1000000.0,
                                 .help = "I-RRT +cs modes: one uniform sample every x shots",
-                                .modes = kIrrt,
+                                .group = "irrt",
                                 .live = true},
                                &S::uniform_every));
+}
+
+ParamTable<S> make_table() {
+  ParamTable<S> t;
+  add_sharing(t);
+  add_irrt(t);
   return t;
 }
 

@@ -1,11 +1,15 @@
 #include "tandem/planning/planner_registry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "tandem/planning/irrt.hpp"
 #include "tandem/planning/rrt.hpp"
 #include "tandem/planning/rrt_connect.hpp"
 #include "tandem/sampling/authority_sharing.hpp"
+
+// Registry entries name only the fields that differ from PlannerEntry's defaults.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 
 namespace tandem {
 namespace {
@@ -28,24 +32,47 @@ std::unique_ptr<Planner> make_irrt(const PlannerContext& c) {
   return std::make_unique<IRRT>(c.validator, c.start, c.goal, c.settings, *c.interaction);
 }
 
+void contact_off(PlannerSettings& s) {
+  s.interaction.contact = false;
+}
+void contact_on(PlannerSettings& s) {
+  s.interaction.contact = true;
+}
+
 const std::vector<PlannerEntry> kRegistry = {
-    {"birrt", "the computer alone: RRT-Connect (bidirectional RRT)", "Kuffner & LaValle, ICRA 2000",
-     false, nullptr, make_birrt},
-    {"rrt", "the computer alone: single-tree RRT with goal bias", "LaValle, TR 98-11, 1998", false,
-     nullptr, make_rrt},
-    {"interactive",
-     "authority sharing: RRT-Connect growing toward a uniform sample (probability alpha) or the "
-     "operator's q_device",
-     "Blin et al., IROS 2016, Algorithm 1", true,
-     [](PlannerSettings& s) { s.interaction.contact = false; }, make_interactive},
-    {"interactive-contact",
-     "authority sharing with contact sampling: near an obstacle, N samples on its tangent plane "
-     "with the operator's orientation",
-     "Blin et al., IROS 2016, Algorithm 3", true,
-     [](PlannerSettings& s) { s.interaction.contact = true; }, make_interactive},
-    {"irrt",
-     "the Interactive RRT: pseudo-forces, Gaussian shooting around the operator, node labels",
-     "Taix & Flavigne, ECMS 2011", true, nullptr, make_irrt},
+    {.name = "birrt",
+     .description = "the computer alone: RRT-Connect (bidirectional RRT)",
+     .citation = "Kuffner & LaValle, ICRA 2000",
+     .make = make_birrt},
+    {.name = "rrt",
+     .description = "the computer alone: single-tree RRT with goal bias",
+     .citation = "LaValle, TR 98-11, 1998",
+     .groups = {"goal_bias"},
+     .make = make_rrt,
+     .ompl_range = "rrt"},
+    {.name = "interactive",
+     .description = "authority sharing: RRT-Connect growing toward a uniform sample (probability "
+                    "alpha) or the operator's q_device",
+     .citation = "Blin et al., IROS 2016, Algorithm 1",
+     .uses_operator = true,
+     .groups = {"sharing", "operator"},
+     .preset = contact_off,
+     .make = make_interactive},
+    {.name = "interactive-contact",
+     .description = "authority sharing with contact sampling: near an obstacle, N samples on its "
+                    "tangent plane with the operator's orientation",
+     .citation = "Blin et al., IROS 2016, Algorithm 3",
+     .uses_operator = true,
+     .groups = {"sharing", "operator"},
+     .preset = contact_on,
+     .make = make_interactive},
+    {.name = "irrt",
+     .description = "the Interactive RRT: pseudo-forces, Gaussian shooting around the operator, "
+                    "node labels",
+     .citation = "Taix & Flavigne, ECMS 2011",
+     .uses_operator = true,
+     .groups = {"irrt", "goal_bias", "operator"},
+     .make = make_irrt},
 };
 
 }  // namespace
@@ -103,14 +130,22 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
   return e->make({validator, start, goal, settings, interaction});
 }
 
+bool planner_uses(std::string_view name, const ParamSpec& spec) {
+  if (spec.group.empty())
+    return true;
+  const PlannerEntry* e = find_planner(name);
+  return e != nullptr &&
+         std::find(e->groups.begin(), e->groups.end(), spec.group) != e->groups.end();
+}
+
 std::vector<const ParamSpec*> planner_tunables(std::string_view name) {
   std::vector<const ParamSpec*> specs;
   for (const auto& p : planner_parameters()) {
-    if (p.spec.used_by(name))
+    if (planner_uses(name, p.spec))
       specs.push_back(&p.spec);
   }
   for (const auto& p : interaction_parameters()) {
-    if (p.spec.used_by(name))
+    if (planner_uses(name, p.spec))
       specs.push_back(&p.spec);
   }
   return specs;

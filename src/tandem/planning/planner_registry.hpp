@@ -31,9 +31,13 @@ struct PlannerEntry {
   std::string_view description;  ///< one line, for --help and the docs
   std::string_view citation;
   bool uses_operator = false;  ///< it needs an operator feed (and refuses to run without one)
+  /// The groups of tunables it reads besides every tree planner's (ParamSpec::group).
+  std::vector<std::string_view> groups;
   /// Its settings' defaults where they differ from PlannerSettings{} (e.g. contact on).
   void (*preset)(PlannerSettings&) = nullptr;
   std::unique_ptr<Planner> (*make)(const PlannerContext&) = nullptr;
+  /// Whose range an OMPL.app problem's "<planner>.range" gives it.
+  std::string_view ompl_range = "birrt";
 };
 
 const std::vector<PlannerEntry>& planner_registry();
@@ -53,6 +57,9 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
                                       const Config& start, const Config& goal,
                                       const PlannerSettings& settings,
                                       const Interaction* interaction = nullptr);
+
+/// Whether planner `name` reads the tunable.
+bool planner_uses(std::string_view name, const ParamSpec& spec);
 
 /// The declared tunables `name` reads (of every family), in table order.
 std::vector<const ParamSpec*> planner_tunables(std::string_view name);

@@ -1,5 +1,9 @@
 #include "tandem/planning/planner_settings.hpp"
 
+// The tables name only the fields of a ParamSpec that matter for each tunable (designated
+// initializers); the others keep their defaults, which GCC's -Wextra would warn about.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
 namespace tandem {
 namespace {
 
@@ -23,7 +27,7 @@ ParamTable<S> make_table() {
                      .min = 0.0,
                      .max = 1.0,
                      .help = "RRT's and the I-RRT's probability of extending toward the goal",
-                     .modes = {"rrt", "irrt"}},
+                     .group = "goal_bias"},
                     &S::goal_bias));
   t.push_back(choice_param<S>(
       {.name = "extend",

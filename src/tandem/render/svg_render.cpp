@@ -8,6 +8,8 @@
 namespace tandem {
 namespace {
 
+constexpr double kMargin = 30.0;  ///< around and between the views, in pixels
+
 /// Something to draw: a convex part (drawn as the outline of its projection) or one triangle of a
 /// mesh.
 struct Item {
@@ -113,9 +115,7 @@ std::vector<Config> snapshots(const SE3Space& space, const Path& path, int betwe
   return out;
 }
 
-}  // namespace
-
-std::string render_svg(const Problem& problem, const Path& path, const SvgOptions& options) {
+std::vector<Item> obstacle_items(const Problem& problem, const SvgOptions& options) {
   std::vector<Item> obstacles;
   for (const Body& b : problem.scene.obstacles)
     add_body(b, Eigen::Isometry3d::Identity(), obstacles);
@@ -127,6 +127,12 @@ std::string render_svg(const Problem& problem, const Path& path, const SvgOption
       thinned.push_back(obstacles[i]);
     obstacles.swap(thinned);
   }
+  return obstacles;
+}
+
+/// The object at the start (green), along the path (orange) and at the goal (red).
+std::vector<std::vector<Item>> object_items(const Problem& problem, const Path& path,
+                                            const SvgOptions& options) {
   const std::vector<Config> poses =
       path.empty() ? std::vector<Config>{problem.start, problem.goal}
                    : snapshots(problem.space, path, std::max(0, options.object_snapshots));
@@ -139,8 +145,14 @@ std::string render_svg(const Problem& problem, const Path& path, const SvgOption
     objects.emplace_back();
     add_body(body, poses[i].pose(), objects.back());
   }
+  return objects;
+}
 
-  // Extent: the bounds, the obstacles and the object along the path.
+/// The views, one under the other, fitted to the bounds, the obstacles and the object along the
+/// path; returns the picture's height.
+double layout_views(const Problem& problem, const std::vector<Item>& obstacles,
+                    const std::vector<std::vector<Item>>& objects, double width,
+                    std::vector<View>& views) {
   const Bounds& bounds = problem.space.bounds();
   Eigen::Vector3d lo = bounds.min, hi = bounds.max;
   auto extend = [&](const std::vector<Item>& items) {
@@ -154,83 +166,95 @@ std::string render_svg(const Problem& problem, const Path& path, const SvgOption
   extend(obstacles);
   for (const auto& o : objects)
     extend(o);
-
-  std::vector<View> views = {{0, 1, 2, 1.0, "top view (x right, y up)"}};
+  views = {{0, 1, 2, 1.0, "top view (x right, y up)"}};
   if (!problem.space.planar())
     views.push_back({0, 2, 1, -1.0, "side view (x right, z up)"});
-  const double margin = 30.0;
-  const double width = options.panel_width;
-  double y = margin;
+  double y = kMargin;
   for (View& view : views) {
     view.lo = {lo[view.u], lo[view.v]};
     view.hi = {hi[view.u], hi[view.v]};
     const Eigen::Vector2d size = (view.hi - view.lo).cwiseMax(1e-9);
     view.scale = width / size.x();
-    view.x0 = margin;
+    view.x0 = kMargin;
     view.y0 = y + 20.0;
-    y = view.y0 + size.y() * view.scale + margin;
+    y = view.y0 + size.y() * view.scale + kMargin;
   }
+  return y;
+}
 
+/// Polygons far to near, shaded by their facing the light.
+void draw_items(std::ostream& svg, const View& view, std::vector<Item> items, double opacity,
+                double stroke_opacity) {
+  const Eigen::Vector3d light = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
+  std::sort(items.begin(), items.end(),
+            [&](const Item& a, const Item& b) { return view.nearness(a) < view.nearness(b); });
+  for (const auto& item : items) {
+    std::vector<Eigen::Vector2d> points;
+    for (const auto& p : item.points)
+      points.push_back(view.project(p));
+    double shade = 1.0;
+    if (item.convex) {
+      points = convex_hull(points);
+    } else {
+      const Eigen::Vector3d n =
+          (item.points[1] - item.points[0]).cross(item.points[2] - item.points[0]);
+      if (n.norm() > 0)
+        shade = 0.55 + 0.45 * std::abs(n.normalized().dot(light));
+    }
+    svg << "<polygon points=\"";
+    for (const auto& s : points)
+      svg << s.x() << ',' << s.y() << ' ';
+    svg << "\" fill=\"" << hex(item.color, shade) << "\" fill-opacity=\"" << opacity << "\"";
+    if (stroke_opacity > 0) {
+      svg << " stroke=\"" << hex(item.color, 0.5) << "\" stroke-width=\"1\" stroke-opacity=\""
+          << stroke_opacity << "\"";
+    }
+    svg << "/>\n";
+  }
+}
+
+void draw_view(std::ostream& svg, const View& view, const Problem& problem, const Path& path,
+               const std::vector<Item>& obstacles, const std::vector<std::vector<Item>>& objects) {
+  const Bounds& bounds = problem.space.bounds();
+  svg << "<text x=\"" << view.x0 << "\" y=\"" << view.y0 - 6 << "\">" << problem.name << " - "
+      << view.title << "</text>\n";
+  const Eigen::Vector2d a = view.project(bounds.min), b = view.project(bounds.max);
+  svg << "<rect x=\"" << std::min(a.x(), b.x()) << "\" y=\"" << std::min(a.y(), b.y())
+      << "\" width=\"" << std::abs(b.x() - a.x()) << "\" height=\"" << std::abs(b.y() - a.y())
+      << "\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>\n";
+  // Translucent obstacles with outlines, so that what is behind or inside them shows.
+  draw_items(svg, view, obstacles, 0.3, 0.9);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const bool endpoint = i == 0 || i + 1 == objects.size();
+    draw_items(svg, view, objects[i], endpoint ? 0.7 : 0.3, endpoint ? 0.9 : 0.5);
+  }
+  if (path.size() > 1) {
+    svg << "<polyline fill=\"none\" stroke=\"#d02090\" stroke-width=\"2\" points=\"";
+    for (const Config& q : path) {
+      const Eigen::Vector2d s = view.project(q.t);
+      svg << s.x() << ',' << s.y() << ' ';
+    }
+    svg << "\"/>\n";
+  }
+}
+
+}  // namespace
+
+std::string render_svg(const Problem& problem, const Path& path, const SvgOptions& options) {
+  const std::vector<Item> obstacles = obstacle_items(problem, options);
+  const std::vector<std::vector<Item>> objects = object_items(problem, path, options);
+  const double width = options.panel_width;
+  std::vector<View> views;
+  const double height = layout_views(problem, obstacles, objects, width, views);
   std::ostringstream svg;
   svg.setf(std::ios::fixed);
   svg.precision(1);
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width + 2 * margin
-      << "\" height=\"" << y << "\" font-family=\"sans-serif\" font-size=\"13\">\n"
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width + 2 * kMargin
+      << "\" height=\"" << height << "\" font-family=\"sans-serif\" font-size=\"13\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
       << "<title>tandem: " << problem.name << "</title>\n";
-  const Eigen::Vector3d light = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
-
-  auto draw = [&](const View& view, std::vector<Item> items, double opacity,
-                  double stroke_opacity) {
-    std::sort(items.begin(), items.end(),
-              [&](const Item& a, const Item& b) { return view.nearness(a) < view.nearness(b); });
-    for (const auto& item : items) {
-      std::vector<Eigen::Vector2d> points;
-      for (const auto& p : item.points)
-        points.push_back(view.project(p));
-      double shade = 1.0;
-      if (item.convex) {
-        points = convex_hull(points);
-      } else {
-        const Eigen::Vector3d n =
-            (item.points[1] - item.points[0]).cross(item.points[2] - item.points[0]);
-        if (n.norm() > 0)
-          shade = 0.55 + 0.45 * std::abs(n.normalized().dot(light));
-      }
-      svg << "<polygon points=\"";
-      for (const auto& s : points)
-        svg << s.x() << ',' << s.y() << ' ';
-      svg << "\" fill=\"" << hex(item.color, shade) << "\" fill-opacity=\"" << opacity << "\"";
-      if (stroke_opacity > 0) {
-        svg << " stroke=\"" << hex(item.color, 0.5) << "\" stroke-width=\"1\" stroke-opacity=\""
-            << stroke_opacity << "\"";
-      }
-      svg << "/>\n";
-    }
-  };
-
-  for (const View& view : views) {
-    svg << "<text x=\"" << view.x0 << "\" y=\"" << view.y0 - 6 << "\">" << problem.name << " - "
-        << view.title << "</text>\n";
-    const Eigen::Vector2d a = view.project(bounds.min), b = view.project(bounds.max);
-    svg << "<rect x=\"" << std::min(a.x(), b.x()) << "\" y=\"" << std::min(a.y(), b.y())
-        << "\" width=\"" << std::abs(b.x() - a.x()) << "\" height=\"" << std::abs(b.y() - a.y())
-        << "\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>\n";
-    // Translucent obstacles with outlines, so that what is behind or inside them shows.
-    draw(view, obstacles, 0.3, 0.9);
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-      const bool endpoint = i == 0 || i + 1 == objects.size();
-      draw(view, objects[i], endpoint ? 0.7 : 0.3, endpoint ? 0.9 : 0.5);
-    }
-    if (path.size() > 1) {
-      svg << "<polyline fill=\"none\" stroke=\"#d02090\" stroke-width=\"2\" points=\"";
-      for (const Config& q : path) {
-        const Eigen::Vector2d s = view.project(q.t);
-        svg << s.x() << ',' << s.y() << ' ';
-      }
-      svg << "\"/>\n";
-    }
-  }
+  for (const View& view : views)
+    draw_view(svg, view, problem, path, obstacles, objects);
   svg << "</svg>\n";
   return svg.str();
 }

@@ -1,5 +1,9 @@
 #include "tandem/runs/run_spec.hpp"
 
+// The tables name only the fields of a ParamSpec that matter for each tunable (designated
+// initializers); the others keep their defaults, which GCC's -Wextra would warn about.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
 #include "tandem/core/error.hpp"
 #include "tandem/planning/planner_registry.hpp"
 
@@ -8,14 +12,13 @@ namespace {
 
 ParamTable<RunSpec> make_operator_table() {
   const double inf = std::numeric_limits<double>::infinity();
-  const std::vector<std::string_view> modes = {"interactive", "interactive-contact", "irrt"};
   ParamTable<RunSpec> t;
   t.push_back(text_param<RunSpec>(
       {.name = "operator",
        .label = "operator",
        .help = "The simulated operator: experienced or inexperienced (following the problem's "
                "[guide]), or trace:FILE (a recorded trace)",
-       .modes = modes},
+       .group = "operator"},
       &RunSpec::operator_name));
   t.push_back(
       real_param<RunSpec>({.name = "operator_speed",
@@ -24,7 +27,7 @@ ParamTable<RunSpec> make_operator_table() {
                            .max = inf,
                            .min_open = true,
                            .help = "Multiplies the simulated operator's speed along the guide",
-                           .modes = modes},
+                           .group = "operator"},
                           &RunSpec::operator_speed));
   t.push_back(
       integer_param<RunSpec>({.name = "operator_period",
@@ -32,7 +35,7 @@ ParamTable<RunSpec> make_operator_table() {
                               .min = 1.0,
                               .max = 1000000.0,
                               .help = "Planner iterations per operator update in virtual time",
-                              .modes = modes},
+                              .group = "operator"},
                              &RunSpec::operator_period));
   return t;
 }
@@ -90,11 +93,13 @@ void set_tunable(RunSpec& spec, std::string_view name, const ParamValue& value,
 
 void require_used(const RunSpec& spec, std::string_view name, const std::string& where) {
   const Param<RunSpec>* p = find_param(run_tunables(), name);
-  if (p == nullptr || p->spec.used_by(spec.mode))
+  if (p == nullptr || planner_uses(spec.mode, p->spec))
     return;
   std::string users;
-  for (std::string_view m : p->spec.modes)
-    users += (users.empty() ? "" : ", ") + std::string(m);
+  for (const PlannerEntry& e : planner_registry()) {
+    if (planner_uses(e.name, p->spec))
+      users += (users.empty() ? "" : ", ") + std::string(e.name);
+  }
   throw InputError(where, "planner '" + spec.mode + "' does not use " + std::string(name) +
                               " (used by " + users + ")");
 }
@@ -117,22 +122,26 @@ RunSpec default_spec(std::string_view mode, const ProblemPlannerHints& hints) {
   if (hints.time_limit)
     spec.time_limit = *hints.time_limit;
   // OMPL.app gives ranges per planner: RRT's for rrt, RRT-Connect's for the others.
-  const auto range = hints.range.find(mode == "rrt" ? "rrt" : "birrt");
+  const auto range = hints.range.find(std::string(find_planner(mode)->ompl_range));
   if (range != hints.range.end())
     spec.settings.range = range->second;
-  if (hints.extend)
-    set_tunable(spec, "extend", *hints.extend, "the problem's planner.extend");
-  if (hints.goal_bias)
-    set_tunable(spec, "goal_bias", *hints.goal_bias, "the problem's planner.goal_bias");
   for (const auto& [name, value, where] : hints.values)
     set_tunable(spec, name, value, where);
   return spec;
 }
 
+void check_hints(const ProblemPlannerHints& hints, const std::string& source) {
+  if (hints.planner && find_planner(*hints.planner) == nullptr) {
+    throw InputError(source, "planner.name: unknown planner '" + *hints.planner +
+                                 "' (known: " + planner_names_text() + ")");
+  }
+  (void)default_spec("birrt", hints);
+}
+
 std::vector<std::pair<const ParamSpec*, ParamValue>> used_tunables(const RunSpec& spec) {
   std::vector<std::pair<const ParamSpec*, ParamValue>> out;
   for (const auto& p : run_tunables()) {
-    if (p.spec.used_by(spec.mode))
+    if (planner_uses(spec.mode, p.spec))
       out.emplace_back(&p.spec, p.get(spec));
   }
   return out;

@@ -45,6 +45,10 @@ const ParamTable<RunSpec>& run_tunables();
 /// Throws InputError for an unknown mode or a bad value in the problem.
 RunSpec default_spec(std::string_view mode, const ProblemPlannerHints& hints);
 
+/// Checks what a problem file says about planning (its planner's name, its tunables' names and
+/// values); throws InputError naming the file and line. Every command that loads a problem calls it.
+void check_hints(const ProblemPlannerHints& hints, const std::string& source);
+
 /// Sets tunable `name` to `value`, or throws InputError(where, fault) for an unknown name or a
 /// value outside the declared range. `where` names the option or the file and line.
 void set_tunable(RunSpec& spec, std::string_view name, const ParamValue& value,

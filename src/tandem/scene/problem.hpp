@@ -16,10 +16,8 @@ namespace tandem {
 
 /// Planning settings a problem file may carry. Empty optionals mean "use tandem's default".
 struct ProblemPlannerHints {
-  std::optional<std::string> planner;   ///< "birrt" or "rrt"
+  std::optional<std::string> planner;   ///< a planner of the registry (checked when run)
   std::map<std::string, double> range;  ///< per planner name ("rrt", "birrt")
-  std::optional<std::string> extend;    ///< "classic" or "last-valid"
-  std::optional<double> goal_bias;      ///< RRT's probability of sampling the goal
   std::optional<double> time_limit;     ///< seconds
   std::optional<std::uint64_t> seed;
   std::optional<std::uint32_t> run_count;  ///< benchmark runs ([benchmark] run_count in OMPL.app)

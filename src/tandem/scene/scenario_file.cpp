@@ -333,55 +333,36 @@ std::vector<Config> read_guide(TomlTable& top, const SE3Space& space) {
   return guide;
 }
 
-/// planner.name: "birrt" or "rrt".
-void read_planner_name(TomlTable& p, ProblemPlannerHints& hints) {
-  if (auto n = p.optional_string("name")) {
-    if (*n != "birrt" && *n != "rrt")
-      throw InputError(p.at(p.require("name")), "planner.name must be \"birrt\" or \"rrt\"");
-    hints.planner = *n;
-  }
+/// A TOML value as a parameter value, in its TOML type (the declared kind and range are checked
+/// when a run is made from the problem: runs/run_spec.hpp, check_hints()).
+ParamValue toml_param(const toml::node& n) {
+  if (auto i = n.value_exact<std::int64_t>())
+    return *i;
+  if (n.is_floating_point())
+    return *n.value<double>();
+  if (auto b = n.value_exact<bool>())
+    return *b;
+  if (auto t = n.value_exact<std::string>())
+    return *t;
+  return std::string(n.is_array() ? "<an array>" : n.is_table() ? "<a table>" : "<a value>");
 }
 
-/// planner.range (for both planners) and planner.goal_bias.
-void read_planner_range(TomlTable& p, ProblemPlannerHints& hints) {
-  if (p.has("range")) {
-    const double r = p.positive("range");
-    hints.range["birrt"] = r;
-    hints.range["rrt"] = r;
-  }
-  if (p.has("goal_bias")) {
-    const toml::node& n = p.require("goal_bias");
-    const double b = p.number(n, "goal_bias");
-    if (b < 0.0 || b > 1.0)
-      p.fail(n, "goal_bias", "must be in [0, 1]");
-    hints.goal_bias = b;
-  }
-}
-
-/// planner.extend: "classic" or "last-valid".
-void read_planner_extend(TomlTable& p, ProblemPlannerHints& hints) {
-  if (auto e = p.optional_string("extend")) {
-    if (*e != "classic" && *e != "last-valid")
-      throw InputError(p.at(p.require("extend")),
-                       "planner.extend must be \"classic\" or \"last-valid\"");
-    hints.extend = *e;
-  }
-}
-
-/// The [planner] table: the problem's suggested planner settings (none without it).
+/// The [planner] table: the problem's planner (name), time limit and seed, and any declared
+/// tunable by its name (range, extend, goal_bias, alpha, ...).
 ProblemPlannerHints read_planner_hints(TomlTable& top) {
   ProblemPlannerHints hints;
   if (!top.has("planner"))
     return hints;
   TomlTable p = top.subtable("planner");
-  read_planner_name(p, hints);
-  read_planner_range(p, hints);
-  read_planner_extend(p, hints);
+  hints.planner = p.optional_string("name");
   if (p.has("time_limit"))
     hints.time_limit = p.positive("time_limit");
   if (auto seed = p.optional_integer("seed", 0))
     hints.seed = static_cast<std::uint64_t>(*seed);
-  p.reject_unknown();
+  for (const std::string& key : p.unread()) {
+    const toml::node& n = p.require(key);
+    hints.values.push_back({key, toml_param(n), p.at(n)});
+  }
   return hints;
 }
 

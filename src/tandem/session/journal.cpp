@@ -59,23 +59,21 @@ void mix_body(Digest& d, const Body& body) {
 
 json settings_json(const PlannerSettings& s) {
   json j = interaction_json(s.interaction);
-  j["range"] = s.range;
-  j["goal_bias"] = s.goal_bias;
-  j["extend"] = std::string(to_string(s.extend));
-  j["nearest_neighbors"] = s.nearest_neighbors;
+  j.update(settings_json(planner_parameters(), s));
   return j;
 }
 
+/// The planner's settings of a header: every declared tunable, each within its range.
 PlannerSettings settings_from_json(const json& j, std::uint64_t seed) {
   PlannerSettings s;
   s.seed = seed;
-  s.range = j.at("range").get<double>();
-  s.goal_bias = j.at("goal_bias").get<double>();
-  const auto extend = parse_extend_mode(j.at("extend").get<std::string>());
-  if (!extend)
-    throw std::invalid_argument("unknown extend mode");
-  s.extend = *extend;
-  s.nearest_neighbors = j.at("nearest_neighbors").get<std::string>();
+  for (const auto& p : planner_parameters()) {
+    const std::string name(p.spec.name);
+    const ParamValue v = param_from_json(j.at(name));
+    if (auto fault = param_fault(p.spec, v))
+      throw std::invalid_argument(name + " " + *fault);
+    p.set(s, normalise_param(p.spec, v));
+  }
   s.interaction = interaction_from_json(j);
   return s;
 }
@@ -179,6 +177,95 @@ void JournalWriter::event(std::uint64_t steps, const std::string& what) {
   write_line(json{{"event", what}, {"steps", steps}}.dump());
 }
 
+namespace {
+
+/// Where a record's fault is: "FILE: line N".
+struct RecordAt {
+  const std::filesystem::path& file;
+  std::string line;
+  [[noreturn]] void fail(const std::string& fault) const {
+    throw InputError(file.string(), line + ": " + fault);
+  }
+};
+
+void read_header(const json& j, const std::filesystem::path& file, JournalHeader& h) {
+  if (!j.is_object() || j.value("journal", "") != kMagic)
+    throw InputError(file.string(), "not a tandem session journal (no header line)");
+  if (j.at("version").get<int>() != kVersion) {
+    throw InputError(file.string(), "journal version " +
+                                        std::to_string(j.at("version").get<int>()) +
+                                        " (this tandem reads version 1)");
+  }
+  h.problem = j.at("problem").get<std::string>();
+  h.problem_digest = j.at("problem_digest").get<std::string>();
+  h.mode = j.at("mode").get<std::string>();
+  h.settings = settings_from_json(j.at("settings"), j.at("seed").get<std::uint64_t>());
+  h.operator_description = j.at("operator").get<std::string>();
+  h.started = j.at("started").get<std::string>();
+}
+
+void read_operator_record(const json& j, const RecordAt& at, Journal& journal) {
+  Journal::OperatorRecord r;
+  r.iteration = j.at("op").get<std::uint64_t>();
+  r.sequence = j.at("seq").get<std::uint64_t>();
+  r.time = j.at("t").get<double>();
+  r.pace = j.at("pace").get<double>();
+  r.device.q_device = config_from_json(j.at("q"));
+  const json& v = j.at("v");
+  if (!v.is_array() || v.size() != 6)
+    throw std::invalid_argument("a velocity is 6 numbers");
+  for (std::size_t k = 0; k < 6; ++k)
+    r.device.velocity[static_cast<Eigen::Index>(k)] = v[k].get<double>();
+  r.device.buttons = j.at("b").get<std::uint32_t>();
+  r.segment = journal.resets.size();
+  if (!journal.operator_states.empty() && journal.operator_states.back().segment == r.segment &&
+      r.iteration < journal.operator_states.back().iteration) {
+    at.fail("operator record before the previous one");
+  }
+  journal.operator_states.push_back(r);
+}
+
+void read_digest(const json& j, const RecordAt& at, Journal& journal) {
+  JournalDigest d;
+  if (j.contains("end"))
+    d.end_status = j.at("end").get<std::string>();
+  d.digest = j.at("digest").get<std::string>();
+  d.steps = j.at("steps").get<std::uint64_t>();
+  d.iterations = j.at("iterations").get<std::uint64_t>();
+  d.nodes = j.at("nodes").get<std::size_t>();
+  if (!journal.digests.empty() && d.steps < journal.digests.back().steps)
+    at.fail("digest before the previous one");
+  journal.digests.push_back(d);
+}
+
+/// A record after the header.
+void read_record(const json& j, const RecordAt& at, Journal& journal) {
+  if (j.contains("op")) {
+    read_operator_record(j, at, journal);
+  } else if (j.contains("params")) {
+    JournalParams p;
+    p.steps = j.at("params").get<std::uint64_t>();
+    p.settings = interaction_from_json(j.at("settings"));
+    if (!journal.params.empty() && p.steps < journal.params.back().steps)
+      at.fail("parameters before the previous ones");
+    journal.params.push_back(p);
+  } else if (j.contains("event")) {
+    journal.events.push_back(
+        {j.at("steps").get<std::uint64_t>(), j.at("event").get<std::string>()});
+  } else if (j.contains("reset")) {
+    const auto steps = j.at("reset").get<std::uint64_t>();
+    if (!journal.resets.empty() && steps < journal.resets.back())
+      at.fail("reset before the previous one");
+    journal.resets.push_back(steps);
+  } else if (j.contains("digest")) {
+    read_digest(j, at, journal);
+  } else {
+    at.fail("unknown record");
+  }
+}
+
+}  // namespace
+
 Journal read_journal(const std::filesystem::path& file) {
   const std::string text = read_text_file(file);
   Journal journal;
@@ -186,8 +273,7 @@ Journal read_journal(const std::filesystem::path& file) {
   bool have_header = false;
   while (pos < text.size()) {
     const std::size_t end = text.find('\n', pos);
-    ++line_no;
-    const std::string where = "line " + std::to_string(line_no);
+    const RecordAt at{file, "line " + std::to_string(++line_no)};
     if (end == std::string::npos) {
       // A last line without its newline: the process was killed while writing it.
       journal.torn = true;
@@ -201,78 +287,18 @@ Journal read_journal(const std::filesystem::path& file) {
     try {
       j = json::parse(line);
     } catch (const json::parse_error&) {
-      throw InputError(file.string(), where + ": not a JSON object");
+      at.fail("not a JSON object");
     }
     try {
-      if (!have_header) {
-        if (!j.is_object() || j.value("journal", "") != kMagic)
-          throw InputError(file.string(), "not a tandem session journal (no header line)");
-        if (j.at("version").get<int>() != kVersion) {
-          throw InputError(file.string(), "journal version " +
-                                              std::to_string(j.at("version").get<int>()) +
-                                              " (this tandem reads version 1)");
-        }
-        JournalHeader& h = journal.header;
-        h.problem = j.at("problem").get<std::string>();
-        h.problem_digest = j.at("problem_digest").get<std::string>();
-        h.mode = j.at("mode").get<std::string>();
-        h.settings = settings_from_json(j.at("settings"), j.at("seed").get<std::uint64_t>());
-        h.operator_description = j.at("operator").get<std::string>();
-        h.started = j.at("started").get<std::string>();
-        have_header = true;
-      } else if (j.contains("op")) {
-        Journal::OperatorRecord r;
-        r.iteration = j.at("op").get<std::uint64_t>();
-        r.sequence = j.at("seq").get<std::uint64_t>();
-        r.time = j.at("t").get<double>();
-        r.pace = j.at("pace").get<double>();
-        r.device.q_device = config_from_json(j.at("q"));
-        const json& v = j.at("v");
-        if (!v.is_array() || v.size() != 6)
-          throw std::invalid_argument("a velocity is 6 numbers");
-        for (std::size_t k = 0; k < 6; ++k)
-          r.device.velocity[static_cast<Eigen::Index>(k)] = v[k].get<double>();
-        r.device.buttons = j.at("b").get<std::uint32_t>();
-        r.segment = journal.resets.size();
-        if (!journal.operator_states.empty() &&
-            journal.operator_states.back().segment == r.segment &&
-            r.iteration < journal.operator_states.back().iteration) {
-          throw InputError(file.string(), where + ": operator record before the previous one");
-        }
-        journal.operator_states.push_back(r);
-      } else if (j.contains("params")) {
-        JournalParams p;
-        p.steps = j.at("params").get<std::uint64_t>();
-        p.settings = interaction_from_json(j.at("settings"));
-        if (!journal.params.empty() && p.steps < journal.params.back().steps)
-          throw InputError(file.string(), where + ": parameters before the previous ones");
-        journal.params.push_back(p);
-      } else if (j.contains("event")) {
-        journal.events.push_back(
-            {j.at("steps").get<std::uint64_t>(), j.at("event").get<std::string>()});
-      } else if (j.contains("reset")) {
-        const auto steps = j.at("reset").get<std::uint64_t>();
-        if (!journal.resets.empty() && steps < journal.resets.back())
-          throw InputError(file.string(), where + ": reset before the previous one");
-        journal.resets.push_back(steps);
-      } else if (j.contains("digest")) {
-        JournalDigest d;
-        if (j.contains("end"))
-          d.end_status = j.at("end").get<std::string>();
-        d.digest = j.at("digest").get<std::string>();
-        d.steps = j.at("steps").get<std::uint64_t>();
-        d.iterations = j.at("iterations").get<std::uint64_t>();
-        d.nodes = j.at("nodes").get<std::size_t>();
-        if (!journal.digests.empty() && d.steps < journal.digests.back().steps)
-          throw InputError(file.string(), where + ": digest before the previous one");
-        journal.digests.push_back(d);
-      } else {
-        throw InputError(file.string(), where + ": unknown record");
-      }
+      if (have_header)
+        read_record(j, at, journal);
+      else
+        read_header(j, file, journal.header);
+      have_header = true;
     } catch (const json::exception& e) {
-      throw InputError(file.string(), where + ": malformed record (" + e.what() + ")");
+      at.fail(std::string("malformed record (") + e.what() + ")");
     } catch (const std::invalid_argument& e) {
-      throw InputError(file.string(), where + ": " + e.what());
+      at.fail(e.what());
     }
   }
   if (!have_header)

@@ -192,107 +192,142 @@ void LiveSession::journal_digest(const std::optional<std::string>& end_status) {
   journal_->digest(d);
 }
 
-PlannerStatus LiveSession::run(const std::function<void(const LiveProgress&)>& progress) {
+// run() in phases: the operator starts, then each turn of the loop applies the commands, steps
+// the planner (unless paused), keeps the planning time and the journal's digests, and now and
+// then publishes the progress.
+struct LiveSession::Loop {
+  const Stopwatch watch;
+  double planning_s = 0.0;  ///< planning time since the start or the last reset, pauses out
+  double last_tick = 0.0, next_report = 1.0, next_digest = 0.0;
+  double next_observe = 0.0, rate_t0 = 0.0;
+  std::uint64_t rate_iterations0 = 0, resets_seen = 0;
+  double iterations_per_s = 0.0;
+  std::uint64_t since_check = 0;
+  bool may_step = false;
+  bool stepped_by_hand = false;
+};
+
+void LiveSession::start_operator() {
   operator_thread_ = std::make_unique<OperatorThread>(
       OperatorModel(checker_, switch_), channel_, options_.operator_rate_hz, &roadmap_distance_);
   // The planner starts with the operator's first state in hand.
   while (channel_.latest() == nullptr && !stop_.load(std::memory_order_relaxed))
     std::this_thread::sleep_for(std::chrono::microseconds(100));
+}
 
+bool LiveSession::step_planner(Loop& loop) {
   static constexpr auto kOperator = static_cast<std::size_t>(NodeSource::operator_);
-  const Stopwatch watch;
-  double planning_s = 0.0;  // planning time since the start or the last reset, pauses out
-  double last_tick = 0.0, next_report = 1.0, next_digest = options_.digest_every_s;
-  double next_observe = 0.0, rate_t0 = 0.0;
-  std::uint64_t rate_iterations0 = 0, resets_seen = 0;
-  double iterations_per_s = 0.0;
-  std::uint64_t since_check = 0;
+  loop.stepped_by_hand = false;
+  if (paused_) {
+    --steps_requested_;
+    loop.stepped_by_hand = true;
+  }
+  const std::size_t operator_nodes = planner_->stats().nodes_by_source[kOperator];
+  status_ = planner_->step();
+  ++steps_;
+  journal_feed();
+  if (planner_->stats().nodes_by_source[kOperator] != operator_nodes)
+    measure_latency();
+  if (status_ != PlannerStatus::running) {
+    if (!options_.stay)
+      return false;
+    journal_digest(std::nullopt);
+  }
+  return true;
+}
+
+bool LiveSession::keep_time(Loop& loop, double t) {
+  if (loop.may_step && !loop.stepped_by_hand)
+    loop.planning_s += t - loop.last_tick;
+  loop.last_tick = t;
+  if (status_ == PlannerStatus::running && loop.planning_s >= spec_.time_limit) {
+    status_ = PlannerStatus::timeout;
+    if (!options_.stay)
+      return false;
+    journal_digest(std::nullopt);
+  }
+  if (t >= loop.next_digest) {
+    journal_digest(std::nullopt);
+    loop.next_digest = t + options_.digest_every_s;
+  }
+  if (const Guidance* g = guidance_channel_.latest()) {
+    last_guidance_ = *g;
+    have_guidance_ = true;
+  }
+  return true;
+}
+
+LiveProgress LiveSession::measure_progress(Loop& loop, double t) {
+  if (t - loop.rate_t0 >= 0.5) {
+    const std::uint64_t it = planner_->stats().iterations;
+    loop.iterations_per_s = static_cast<double>(it - loop.rate_iterations0) / (t - loop.rate_t0);
+    loop.rate_iterations0 = it;
+    loop.rate_t0 = t;
+  }
+  LiveProgress p;
+  p.stats = planner_->stats();
+  p.status = status_;
+  p.steps = steps_;
+  p.resets = resets_;
+  p.paused = paused_;
+  p.elapsed_s = loop.planning_s;
+  p.iterations_per_s = status_ == PlannerStatus::running && !paused_ ? loop.iterations_per_s : 0.0;
+  p.operator_rate_hz = operator_thread_->achieved_rate();
+  p.input_latency_s = latency_s_;
+  p.input_latency_id = latency_id_;
+  return p;
+}
+
+void LiveSession::publish_progress(Loop& loop, double t, const ProgressCallback& progress) {
+  const bool report = t >= loop.next_report;
+  if (!(t >= loop.next_observe || report || loop.stepped_by_hand))
+    return;
+  const LiveProgress p = measure_progress(loop, t);
+  {
+    const std::lock_guard lock(pending_mutex_);
+    progress_ = p;
+  }
+  const OperatorInput input = switch_->snapshot().input;
+  if (input != input_) {
+    journal_->event(steps_, "input " + std::string(to_string(input)));
+    input_ = input;
+  }
+  if (observer_ != nullptr)
+    observer_->observe(*this, *planner_);
+  loop.next_observe = t + options_.observe_every_s;
+  if (report && progress) {
+    progress(p);
+    loop.next_report = t + 1.0;
+  }
+}
+
+PlannerStatus LiveSession::run(const ProgressCallback& progress) {
+  start_operator();
+  Loop loop;
+  loop.next_digest = options_.digest_every_s;
   while (!stop_.load(std::memory_order_relaxed)) {
     apply_commands();
-    if (resets_ != resets_seen) {
-      resets_seen = resets_;
-      planning_s = 0.0;
-      rate_iterations0 = 0;
+    if (resets_ != loop.resets_seen) {
+      loop.resets_seen = resets_;
+      loop.planning_s = 0.0;
+      loop.rate_iterations0 = 0;
     }
-    const bool may_step = status_ == PlannerStatus::running && (!paused_ || steps_requested_ > 0);
-    bool stepped_by_hand = false;
-    if (may_step) {
-      if (paused_) {
-        --steps_requested_;
-        stepped_by_hand = true;
-      }
-      const std::size_t operator_nodes = planner_->stats().nodes_by_source[kOperator];
-      status_ = planner_->step();
-      ++steps_;
-      journal_feed();
-      if (planner_->stats().nodes_by_source[kOperator] != operator_nodes)
-        measure_latency();
-      if (status_ != PlannerStatus::running) {
-        if (!options_.stay)
-          break;
-        journal_digest(std::nullopt);
-      }
+    loop.may_step = status_ == PlannerStatus::running && (!paused_ || steps_requested_ > 0);
+    loop.stepped_by_hand = false;
+    if (loop.may_step) {
+      if (!step_planner(loop))
+        break;
       // The clock is read every 64 steps (a step is a few microseconds).
-      if (++since_check < 64 && !stepped_by_hand && status_ == PlannerStatus::running)
+      if (++loop.since_check < 64 && !loop.stepped_by_hand && status_ == PlannerStatus::running)
         continue;
     } else {
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
-    since_check = 0;
-    const double t = watch.seconds();
-    if (may_step && !stepped_by_hand)
-      planning_s += t - last_tick;
-    last_tick = t;
-    if (status_ == PlannerStatus::running && planning_s >= spec_.time_limit) {
-      status_ = PlannerStatus::timeout;
-      if (!options_.stay)
-        break;
-      journal_digest(std::nullopt);
-    }
-    if (t >= next_digest) {
-      journal_digest(std::nullopt);
-      next_digest = t + options_.digest_every_s;
-    }
-    if (const Guidance* g = guidance_channel_.latest()) {
-      last_guidance_ = *g;
-      have_guidance_ = true;
-    }
-    const bool report = t >= next_report;
-    if (t >= next_observe || report || stepped_by_hand) {
-      if (t - rate_t0 >= 0.5) {
-        const std::uint64_t it = planner_->stats().iterations;
-        iterations_per_s = static_cast<double>(it - rate_iterations0) / (t - rate_t0);
-        rate_iterations0 = it;
-        rate_t0 = t;
-      }
-      LiveProgress p;
-      p.stats = planner_->stats();
-      p.status = status_;
-      p.steps = steps_;
-      p.resets = resets_;
-      p.paused = paused_;
-      p.elapsed_s = planning_s;
-      p.iterations_per_s = status_ == PlannerStatus::running && !paused_ ? iterations_per_s : 0.0;
-      p.operator_rate_hz = operator_thread_->achieved_rate();
-      p.input_latency_s = latency_s_;
-      p.input_latency_id = latency_id_;
-      {
-        const std::lock_guard lock(pending_mutex_);
-        progress_ = p;
-      }
-      const OperatorInput input = switch_->snapshot().input;
-      if (input != input_) {
-        journal_->event(steps_, "input " + std::string(to_string(input)));
-        input_ = input;
-      }
-      if (observer_ != nullptr)
-        observer_->observe(*this, *planner_);
-      next_observe = t + options_.observe_every_s;
-      if (report && progress) {
-        progress(p);
-        next_report = t + 1.0;
-      }
-    }
+    loop.since_check = 0;
+    const double t = loop.watch.seconds();
+    if (!keep_time(loop, t))
+      break;
+    publish_progress(loop, t, progress);
   }
   if (status_ == PlannerStatus::running)
     status_ = PlannerStatus::interrupted;

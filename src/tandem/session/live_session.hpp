@@ -86,7 +86,8 @@ class LiveSession {
   /// Runs the planner on the calling thread until it solves or spec.time_limit of planning passes
   /// (then, with options.stay, waits for a reset or stop()), or until stop(); calls `progress`
   /// about once a second. Returns the session's status at the end.
-  PlannerStatus run(const std::function<void(const LiveProgress&)>& progress = {});
+  using ProgressCallback = std::function<void(const LiveProgress&)>;
+  PlannerStatus run(const ProgressCallback& progress = {});
   void set_observer(LiveObserver* observer) { observer_ = observer; }
 
   // Commands, thread-safe; they take effect after the planner's current step, in order.
@@ -120,6 +121,14 @@ class LiveSession {
   const std::filesystem::path& journal_file() const { return journal_->file(); }
 
  private:
+  struct Loop;
+  void start_operator();
+  /// One planner step; false when the session ends with the planner.
+  bool step_planner(Loop& loop);
+  /// Planning time, time limit, digests, guidance; false when the session ends on the limit.
+  bool keep_time(Loop& loop, double t);
+  LiveProgress measure_progress(Loop& loop, double t);
+  void publish_progress(Loop& loop, double t, const ProgressCallback& progress);
   void apply_commands();
   void start_planner();
   void journal_feed();

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tandem/io/json_codec.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
@@ -147,7 +148,7 @@ ClientMessage parse_client_message(std::string_view text, const InteractionSetti
 json announced_parameters(std::string_view planner, const InteractionSettings& defaults) {
   json list = json::array();
   for (const auto& p : interaction_parameters()) {
-    if (p.spec.live && !p.spec.modes.empty() && p.spec.used_by(planner))
+    if (p.spec.live && !p.spec.group.empty() && planner_uses(planner, p.spec))
       list.push_back(param_spec_json(p.spec, p.get(defaults)));
   }
   return list;

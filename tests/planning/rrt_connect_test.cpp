@@ -1,43 +1,24 @@
-// Planner runs with fixed seeds on real problems: OMPL.app's Easy and cubicles, and the built-in
-// scene.
+// RRT-Connect (BiRRT) runs with fixed seeds on real problems: OMPL.app's Easy and cubicles, and the
+// built-in scene.
+
+#include "tandem/planning/rrt_connect.hpp"
 
 #include <gtest/gtest.h>
 
-#include "support/test_support.hpp"
+#include "support/runs.hpp"
+#include "tandem/collision/collision_checker.hpp"
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/planning/path.hpp"
-#include "tandem/planning/planner.hpp"
 #include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/run_spec.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 #include "tandem/scene/problem_loader.hpp"
 
 namespace tandem {
 namespace {
 
-struct PlanRun {
-  PlannerStatus status;
-  PlannerStats stats;
-  bool path_valid = false;
-};
-
-PlanRun plan(const Problem& problem, const std::string& planner_name, std::uint64_t seed,
-             double time_limit) {
-  CollisionChecker checker(problem.scene);
-  MotionValidator validator(problem.space, checker);
-  PlannerSettings settings;
-  settings.seed = seed;
-  if (auto it = problem.hints.range.find(planner_name); it != problem.hints.range.end())
-    settings.range = it->second;
-  auto planner = make_planner(planner_name, validator, problem.start, problem.goal, settings);
-  Termination t;
-  t.time_limit_s = time_limit;
-  PlanRun r{planner->solve(t), planner->stats()};
-  if (r.status == PlannerStatus::solved) {
-    CollisionChecker fresh(problem.scene);
-    MotionValidator check(problem.space, fresh);
-    r.path_valid = check_path(planner->solution(), check).valid;
-  }
-  return r;
-}
+using test::plan;
+using test::PlanRun;
 
 class OmplAppRuns
     : public ::testing::TestWithParam<std::tuple<std::string, std::string, std::uint64_t>> {};
@@ -63,15 +44,6 @@ INSTANTIATE_TEST_SUITE_P(EasyAndCubicles, OmplAppRuns,
                                   std::to_string(std::get<2>(test_info.param));
                          });
 
-TEST(OmplAppRuns, RrtSolvesEasy) {
-  TANDEM_REQUIRE_SHARED_DATA();
-  const Problem problem =
-      load_ompl_app_problem(test::shared_dir() / "benchmarks" / "omplapp" / "3D" / "Easy.cfg");
-  const PlanRun r = plan(problem, "rrt", 1, 60.0);
-  ASSERT_EQ(r.status, PlannerStatus::solved);
-  EXPECT_TRUE(r.path_valid);
-}
-
 class BuiltinSceneRuns : public ::testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(BuiltinSceneRuns, SolveClutteredEnvironment1WithTheScenesSettings) {
@@ -80,9 +52,9 @@ TEST_P(BuiltinSceneRuns, SolveClutteredEnvironment1WithTheScenesSettings) {
   const Problem problem = load_problem("cluttered-1");
   CollisionChecker checker(problem.scene);
   MotionValidator validator(problem.space, checker);
-  PlannerSettings settings;
+  PlannerSettings settings = default_spec("birrt", problem.hints).settings;
   settings.seed = GetParam();
-  settings.extend = *parse_extend_mode(problem.hints.extend.value_or("classic"));
+  ASSERT_EQ(settings.extend, ExtendMode::last_valid);
   auto planner = make_planner("birrt", validator, problem.start, problem.goal, settings);
   Termination t;
   t.time_limit_s = 120.0;

@@ -1,6 +1,7 @@
+#include "tandem/nn/kd_tree_nn.hpp"
+
 #include <gtest/gtest.h>
 
-#include "tandem/nn/kd_tree_nn.hpp"
 #include "tandem/nn/linear_nn.hpp"
 
 namespace tandem {

@@ -1,55 +1,23 @@
-// The interactive BiRRT (Blin et al. 2016, Algorithms 1-3) driven by simulated operators.
+// Authority sharing with contact sampling (Blin et al. 2016, Algorithms 1-3), through the
+// "interactive" planner (RRT-Connect with an AuthoritySharing sampler) driven by simulated
+// operators.
+
+#include "tandem/sampling/authority_sharing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cmath>
 #include <limits>
-#include <thread>
 
-#include "support/test_support.hpp"
-#include "tandem/interaction/operator_thread.hpp"
+#include "support/problems.hpp"
 #include "tandem/operators/guide_follower.hpp"
 #include "tandem/planning/path.hpp"
-#include "tandem/planning/planner.hpp"
 #include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
 
-/// The wall with a gap, start and goal far from the gap (the straight line between them is
-/// blocked), and a guide through the gap.
-Problem detour_problem() {
-  Problem p = test::wall_with_gap_problem();
-  p.start.t = {-2, 2, 0};
-  p.goal.t = {2, 2, 0};
-  return p;
-}
-
-struct Fixture {
-  Problem problem = detour_problem();
-  CollisionChecker checker{problem.scene};
-  MotionValidator validator{problem.space, checker};
-
-  std::shared_ptr<const OperatorSource> operator_source(const std::string& profile = "experienced",
-                                                        std::uint64_t seed = 1) const {
-    std::vector<Config> keys(4);
-    keys[0] = problem.start;
-    keys[1].t = {-0.8, 0.0, 0.0};
-    keys[2].t = {0.8, 0.0, 0.0};
-    keys[3] = problem.goal;
-    return std::make_shared<GuideFollower>(
-        problem.space, keys, operator_profile(profile, problem.space, OperatorClock::ticks), seed);
-  }
-};
-
-/// All nodes of all trees, in order.
-std::vector<Config> all_nodes(const Planner& p) {
-  std::vector<Config> out;
-  for (const Tree* t : p.trees())
-    out.insert(out.end(), t->nodes.begin(), t->nodes.end());
-  return out;
-}
+using Fixture = test::OperatorFixture;
+using test::all_nodes;
 
 TEST(InteractiveBiRRT, AtAlphaOneIsExactlyBiRRT) {
   Fixture f;
@@ -189,105 +157,6 @@ TEST(InteractiveBiRRT, ParametersChangeWhilePlanning) {
   parameters.set(computer_only);
   planner->solve(t);
   EXPECT_EQ(planner->stats().operator_iterations, operator_before);
-}
-
-TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
-  // An operator thread publishes on the wall clock while the planner runs; the feed's record of
-  // what the planner saw replays the run exactly.
-  Fixture f;
-  PlannerSettings settings;
-  settings.seed = 9;
-  settings.extend = ExtendMode::last_valid;
-  settings.interaction.alpha = 0.3;
-  settings.interaction.contact = true;
-  std::vector<Config> keys = {f.problem.start, f.problem.goal};
-  const auto source = std::make_shared<GuideFollower>(
-      f.problem.space, keys,
-      operator_profile("experienced", f.problem.space, OperatorClock::seconds), 1);
-  LatestValue<OperatorState> channel;
-  std::vector<FeedRecord> record;
-  std::vector<Config> live_nodes;
-  {
-    OperatorThread thread(OperatorModel(f.checker, source), channel, 2000.0);
-    while (thread.published() < 5)
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    LiveFeed feed(channel);
-    const Interaction interaction{&feed};
-    auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal,
-                                settings, &interaction);
-    Termination t;
-    t.max_iterations = 4000;
-    planner->solve(t);
-    live_nodes = all_nodes(*planner);
-    record = feed.record();
-    thread.stop();
-    EXPECT_GT(thread.achieved_rate(), 100.0);
-  }
-  ASSERT_FALSE(record.empty());
-  ReplayFeed replay(record);
-  const Interaction interaction{&replay};
-  auto planner = make_planner("interactive", f.validator, f.problem.start, f.problem.goal, settings,
-                              &interaction);
-  Termination t;
-  t.max_iterations = 4000;
-  planner->solve(t);
-  EXPECT_EQ(all_nodes(*planner), live_nodes);
-}
-
-TEST(VirtualTimeFeed, UpdatesEveryPeriodAndCountsItsTime) {
-  Fixture f;
-  VirtualTimeFeed feed(OperatorModel(f.checker, f.operator_source()), 10);
-  const OperatorState* a = feed.at(0);
-  const auto sequence = a->sequence;
-  EXPECT_EQ(feed.at(9)->sequence, sequence);
-  EXPECT_EQ(feed.at(10)->sequence, sequence + 1);
-  EXPECT_EQ(feed.at(10)->time, 10.0);
-  EXPECT_GT(feed.operator_seconds(), 0.0);
-  EXPECT_FALSE(feed.at(10)->nearest.in_collision);
-}
-
-/// A roadmap at a fixed distance from everything.
-struct FixedRoadmap final : RoadmapView {
-  double d = 0.0;
-  double distance_to_roadmap(const Config&) const override { return d; }
-};
-
-TEST(Pacer, FollowsTimeNearTheRoadmapAndGoesBackAwayFromIt) {
-  Pacer never(std::numeric_limits<double>::infinity());
-  EXPECT_EQ(never.advance(50.0, 1e9), 50.0);  // it does not look
-
-  Pacer p(1.0);
-  EXPECT_EQ(p.advance(10.0, 0.5), 10.0);  // the roadmap is near: it moves on
-  EXPECT_EQ(p.advance(30.0, 0.9), 30.0);
-  EXPECT_EQ(p.advance(35.0, 1.5), 25.0);  // too far: it goes back for as long
-  EXPECT_EQ(p.waits(), 1u);
-  EXPECT_EQ(p.advance(35.0, 1.5), 25.0);  // no time passed
-  EXPECT_EQ(p.advance(100.0, 2.0), 0.0);  // never before the start of its way
-  EXPECT_EQ(p.advance(110.0, 0.0), 10.0);
-}
-
-TEST(VirtualTimeFeed, AWatchingOperatorWaitsForTheRoadmap) {
-  Fixture f;
-  const auto source = f.operator_source();
-  ASSERT_TRUE(std::isfinite(source->lead()));
-  FixedRoadmap roadmap;
-  VirtualTimeFeed near(OperatorModel(f.checker, source), 10);
-  VirtualTimeFeed far(OperatorModel(f.checker, source), 10);
-  for (std::uint64_t i = 0; i <= 1000; i += 10) {
-    roadmap.d = 0.0;
-    near.at(i, &roadmap);
-    roadmap.d = 10.0 * source->lead();
-    far.at(i, &roadmap);
-  }
-  // Near the roadmap the operator keeps its schedule; far from it, it never left the start.
-  EXPECT_EQ(near.at(1000)->pace, 1000.0);
-  EXPECT_TRUE(near.at(1000)->device.q_device == source->read(1000.0).q_device);
-  EXPECT_EQ(far.at(1000)->pace, 0.0);
-  EXPECT_EQ(far.operator_waits(), 100u);
-  const auto* guide = dynamic_cast<const GuideFollower*>(source.get());
-  ASSERT_NE(guide, nullptr);
-  EXPECT_LT((far.at(1000)->device.q_device.t - guide->guide_pose(0.0).t).norm(),
-            (near.at(1000)->device.q_device.t - guide->guide_pose(0.0).t).norm());
 }
 
 TEST(InteractiveBiRRT, TheSimulatedOperatorWatchesTheRoadmap) {

@@ -1,68 +1,17 @@
-// Find_Local_Frame and Contact_Shooter (Blin et al. 2016, Algorithm 2).
+// Contact_Shooter (Blin et al. 2016, Algorithm 2).
+
+#include "tandem/sampling/contact_sampler.hpp"
 
 #include <gtest/gtest.h>
 
-#include <numbers>
-
-#include "support/test_support.hpp"
+#include "support/problems.hpp"
 #include "tandem/interaction/contact_frame.hpp"
-#include "tandem/sampling/contact_sampler.hpp"
 
 namespace tandem {
 namespace {
 
-TEST(GramSchmidt, GivesARightHandedOrthonormalFrameAroundN) {
-  Rng rng(1);
-  for (int i = 0; i < 1000; ++i) {
-    const Eigen::Vector3d n =
-        Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
-    const Eigen::Matrix3d R = gram_schmidt(n);
-    ASSERT_TRUE((R.transpose() * R).isIdentity(1e-12));
-    ASSERT_NEAR(R.determinant(), 1.0, 1e-12);
-    ASSERT_TRUE(R.col(2).isApprox(n, 1e-12));
-  }
-}
-
-/// A 1 x 0.4 x 0.4 bar above a floor (top face at z = 0) and beside a wall (face at x = 2).
-struct FloorScene {
-  Problem problem;
-  FloorScene() : problem(make()) {}
-  static Problem make() {
-    Scene s;
-    s.object.name = "bar";
-    s.object.parts.push_back({Box{{1.0, 0.4, 0.4}}, Eigen::Isometry3d::Identity()});
-    s.obstacles.push_back(test::box_body("floor", {10, 10, 0.2}, {0, 0, -0.1}));
-    s.obstacles.push_back(test::box_body("wall", {0.2, 10, 4}, {2.1, 0, 2}));
-    Config start, goal;
-    start.t = {-2, 0, 1};
-    goal.t = {1, 0, 1};
-    return Problem{
-        "floor", "test", std::move(s), SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
-        start,   goal,   {},           {}};
-  }
-};
-
-Config at(double x, double y, double z, double yaw = 0.0) {
-  Config q;
-  q.t = {x, y, z};
-  q.q = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return q;
-}
-
-TEST(ContactFrame, PointsFromTheObstacleToTheObject) {
-  FloorScene f;
-  CollisionChecker checker(f.problem.scene);
-  const Config q = at(-1, 0.5, 0.25);  // bottom face 5 cm above the floor
-  const auto frame = find_local_frame(checker.nearest_obstacle(q), q);
-  ASSERT_TRUE(frame);
-  EXPECT_EQ(checker.obstacle_name(frame->obstacle), "floor");
-  EXPECT_TRUE(frame->n.isApprox(Eigen::Vector3d::UnitZ(), 1e-9));
-  EXPECT_NEAR(frame->distance, 0.05, 1e-9);
-  EXPECT_NEAR(frame->delta, -0.2, 1e-9);  // the nearest point is 0.2 below the centre
-  EXPECT_TRUE(frame->P_c.isApprox(q.t));
-  EXPECT_FALSE(
-      find_local_frame(checker.nearest_obstacle(at(-1, 0, 0.1)), at(-1, 0, 0.1)));  // in the floor
-}
+using test::at;
+using test::FloorScene;
 
 TEST(ContactSampler, SamplesTouchTheObstacleWithTheOperatorsOrientation) {
   FloorScene f;

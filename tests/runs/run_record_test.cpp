@@ -1,0 +1,34 @@
+// Run records: one JSON line per run.
+
+#include "tandem/runs/run_record.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tandem {
+namespace {
+
+TEST(RunRecords, RoundTripThroughAJsonLineAndRejectATornOne) {
+  RunRecord r;
+  r.problem = "p";
+  r.config = "interactive alpha=0.5";
+  r.params = {{"mode", "interactive"}, {"alpha", "0.5"}};
+  r.seed = 9;
+  r.time_limit_s = 30;
+  r.status = "solved";
+  r.solved = r.path_valid = true;
+  r.time_s = 1.25;
+  r.nodes = 100;
+  r.edges = 98;
+  r.nodes_by_source = {2, 50, 48, 0};
+  r.tree_digest = "00ff";
+  const std::string line = format_record(r);
+  const auto back = parse_record(line);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(format_record(*back), line);
+  EXPECT_EQ(back->key(), "interactive alpha=0.5 #9");
+  EXPECT_FALSE(parse_record(line.substr(0, line.size() / 2)));
+  EXPECT_FALSE(parse_record("{}"));
+}
+
+}  // namespace
+}  // namespace tandem

@@ -1,0 +1,25 @@
+// Problems by name: a scenario file, an OMPL.app configuration or a built-in scene.
+
+#include "tandem/scene/problem_loader.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tandem/core/error.hpp"
+
+namespace tandem {
+namespace {
+
+TEST(ProblemLoader, NamesTheBuiltinScenesWhenNothingMatches) {
+  try {
+    load_problem("no-such-scene");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(
+                              "no-such-scene: no such file, and no built-in scene of that name"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("cluttered-1"));
+  }
+}
+
+}  // namespace
+}  // namespace tandem
