@@ -18,8 +18,8 @@
 #include "tandem/io/json_codec.hpp"
 #include "tandem/planning/planner_registry.hpp"
 #include "tandem/runs/run_spec.hpp"
-#include "tandem/scene/problem_loader.hpp"
 #include "tandem/scene/builtin_scenes.hpp"
+#include "tandem/scene/problem_loader.hpp"
 #include "tandem/scene/scenario_file.hpp"
 #include "tandem/web/protocol.hpp"
 

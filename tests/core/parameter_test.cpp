@@ -28,14 +28,17 @@ TEST(ParamFault, RealsMustBeFiniteAndInRange) {
   EXPECT_EQ(param_fault(s, 0.0), std::nullopt);
   EXPECT_EQ(param_fault(s, 1.0), std::nullopt);
   EXPECT_EQ(param_fault(s, std::int64_t{1}), std::nullopt);
-  EXPECT_THAT(param_fault(s, -0.001), Optional(std::string("must be a number in [0, 1], not -0.001")));
+  EXPECT_THAT(param_fault(s, -0.001),
+              Optional(std::string("must be a number in [0, 1], not -0.001")));
   EXPECT_THAT(param_fault(s, 1.5), Optional(std::string("must be a number in [0, 1], not 1.5")));
-  EXPECT_THAT(param_fault(s, std::nan("")), Optional(std::string("must be a number in [0, 1], not nan")));
+  EXPECT_THAT(param_fault(s, std::nan("")),
+              Optional(std::string("must be a number in [0, 1], not nan")));
   EXPECT_THAT(param_fault(s, std::numeric_limits<double>::infinity()),
               Optional(std::string("must be a number in [0, 1], not inf")));
   EXPECT_THAT(param_fault(s, std::string("high")),
               Optional(std::string("must be a number in [0, 1], not 'high'")));
-  EXPECT_THAT(param_fault(s, true), Optional(std::string("must be a number in [0, 1], not 'true'")));
+  EXPECT_THAT(param_fault(s, true),
+              Optional(std::string("must be a number in [0, 1], not 'true'")));
 }
 
 TEST(ParamFault, OpenAndUnboundedRanges) {
@@ -43,7 +46,8 @@ TEST(ParamFault, OpenAndUnboundedRanges) {
   const ParamSpec positive = real_in(0, inf, true);
   EXPECT_THAT(param_fault(positive, 0.0), Optional(std::string("must be a number above 0, not 0")));
   EXPECT_EQ(param_fault(positive, 1e300), std::nullopt);
-  EXPECT_THAT(param_fault(positive, inf), Optional(std::string("must be a number above 0, not inf")));
+  EXPECT_THAT(param_fault(positive, inf),
+              Optional(std::string("must be a number above 0, not inf")));
   const ParamSpec any = real_in(-inf, inf);
   EXPECT_EQ(param_fault(any, -1e300), std::nullopt);
   EXPECT_THAT(param_fault(any, -inf), Optional(std::string("must be a finite number, not -inf")));
@@ -54,7 +58,8 @@ TEST(ParamFault, IntegersMustBeWhole) {
   s.kind = ParamKind::integer;
   EXPECT_EQ(param_fault(s, std::int64_t{1}), std::nullopt);
   EXPECT_EQ(param_fault(s, 1000.0), std::nullopt);  // a whole real, e.g. from JSON
-  EXPECT_THAT(param_fault(s, 2.5), Optional(std::string("must be a whole number in [1, 1000], not 2.5")));
+  EXPECT_THAT(param_fault(s, 2.5),
+              Optional(std::string("must be a whole number in [1, 1000], not 2.5")));
   EXPECT_THAT(param_fault(s, std::int64_t{0}),
               Optional(std::string("must be a whole number in [1, 1000], not 0")));
   EXPECT_EQ(std::get<std::int64_t>(normalise_param(s, 7.0)), 7);

@@ -45,7 +45,9 @@ std::string error_of(F&& f) {
 class Harness {
  public:
   Harness(const std::string& name, Problem problem, std::uint64_t seed)
-      : problem_(std::move(problem)), checker_(problem_.scene), validator_(problem_.space, checker_) {
+      : problem_(std::move(problem)),
+        checker_(problem_.scene),
+        validator_(problem_.space, checker_) {
     RunSpec spec = default_spec(name, problem_.hints);
     spec.settings.seed = seed;
     spec.operator_seed = seed;
