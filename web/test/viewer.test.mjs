@@ -1,7 +1,8 @@
 // The viewer in a real browser (Debian's headless Chromium, driven by playwright-core), against a
 // real tandem process: the page loads, the tree grows, dragging the part adds operator nodes where
 // it is dragged, α changes the share of operator nodes, tuning and reset work and the session
-// still replays to the identical tree, a request without the token is refused, hostile messages
+// still replays to the identical tree, the tuning panel has the controls of the parameters the
+// session announces, a request without the token is refused, hostile messages
 // are refused without disturbing the planner, a replay drives the viewer, the path can be saved,
 // the layered drawing for software renderers shows the same picture as drawing everything.
 import { test, before, after } from 'node:test';
@@ -329,6 +330,42 @@ test('pause, step, reset and tuning from the viewer; the session replays to the 
   assert.match(out, /identical to the session's tree/);
 });
 
+/** The session's announced parameters (hello.parameters) and the tuning panel's controls. */
+async function tuningPanelOf(name, mode) {
+  const run = await startTandem(live(name, ['cluttered-1', '--mode', mode, '--paused']));
+  try {
+    const page = await openViewer(browser, run);
+    return await page.evaluate(() => ({
+      parameters: window.tandem.hello.parameters,
+      controls: [...document.querySelectorAll('#tuning-controls input, #tuning-controls select')].map((el) => ({
+        id: el.id, type: el.type, min: el.getAttribute('min'), max: el.getAttribute('max') })),
+    }));
+  } finally {
+    await stopTandem(run);
+  }
+}
+
+test('the tuning panel has a control per parameter the session announces, with its bounds', { timeout: 90000 }, async () => {
+  const bound = (x) => (x === null || x === undefined ? null : Number(x));
+  for (const mode of ['interactive-contact', 'irrt']) {
+    const { parameters, controls } = await tuningPanelOf(`panel-${mode}`, mode);
+    assert.ok(Array.isArray(parameters) && parameters.length > 0, `${mode} announces parameters`);
+    assert.deepEqual(controls.map((c) => c.id), parameters.map((p) => p.name), `${mode}: one control per parameter, in order`);
+    parameters.forEach((p, k) => {
+      const c = controls[k];
+      if (p.kind === 'boolean') assert.equal(c.type, 'checkbox', p.name);
+      else if (p.kind === 'choice') assert.equal(c.type, 'select-one', p.name);
+      else {
+        assert.equal(bound(c.min), bound(p.min), `${mode} ${p.name}: min`);
+        assert.equal(bound(c.max), bound(p.max), `${mode} ${p.name}: max`);
+      }
+    });
+    if (mode === 'interactive-contact') {
+      for (const name of ['alpha', 'contact_samples']) assert.ok(controls.some((c) => c.id === name), name);
+    }
+  }
+});
+
 test('hostile messages are refused with an error; a viewer that goes away does not disturb the planner', { timeout: 90000 }, async () => {
   const run = await startTandem(live('hostile', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5']));
   try {
@@ -400,6 +437,9 @@ test('a replay drives the viewer to the recorded tree', { timeout: 90000 }, asyn
     await waitFor(page, () => window.tandem.status.status !== 'replaying');
     await waitFor(page, (n) => window.tandem.counts().nodes === n, end.nodes);
     assert.match(run.output, /identical to the session's tree/);
+    // A replay cannot be tuned: it announces no parameter and the panel has no control.
+    assert.deepEqual(await page.evaluate(() => window.tandem.hello.parameters), []);
+    assert.equal(await page.locator('#tuning-controls input, #tuning-controls select').count(), 0);
   } finally {
     await stopTandem(run);
   }

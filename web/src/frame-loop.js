@@ -1,0 +1,78 @@
+// The frame loop: each animation frame moves the part by the operator's devices or to the
+// operator's configuration, and draws a frame only when something changed, at most maxfps times a
+// second (0: no cap), so that a software renderer leaves the planner its core. It keeps the
+// latest `operator` message (the contact plane, the guidance force) and counts frames.
+
+export class FrameLoop {
+  /**
+   * @param view the SceneView
+   * @param maxfps the cap on frames a second (0: none)
+   */
+  constructor(view, maxfps) {
+    this.view = view;
+    this.maxfps = maxfps;
+    this.input = null;
+    this.playback = null;
+    this.dirty = true;
+    this.operator = null; // the last `operator` message
+    this.redrawAlways = false; // a frame every time, for measuring
+    this.fps = 0;
+    this.frames = 0;
+    this.fpsFrames = 0;
+    this.fpsSince = performance.now();
+    this.lastFrame = performance.now();
+    this.lastRender = 0;
+    this.frame = this.frame.bind(this);
+  }
+
+  /** Something changed: the next frame is drawn. */
+  touch() { this.dirty = true; }
+
+  /** An `operator` message. */
+  setOperator(m) {
+    this.operator = m;
+    this.dirty = true;
+  }
+
+  /** Runs the loop, with the OperatorInput and the Playback. */
+  start(input, playback) {
+    this.input = input;
+    this.playback = playback;
+    requestAnimationFrame(this.frame);
+  }
+
+  frame(now) {
+    requestAnimationFrame(this.frame);
+    const dt = Math.min((now - this.lastFrame) / 1000, 0.1);
+    this.lastFrame = now;
+    this.update(dt, now);
+    if (!this.due(now)) return;
+    this.lastRender = now;
+    this.dirty = false;
+    this.view.showOperatorCues(this.operator);
+    this.playback.advance(dt);
+    this.view.render(now);
+    ++this.frames;
+    ++this.fpsFrames;
+  }
+
+  /** What moves without a frame drawn: the part, the turning camera, the frame rate. */
+  update(dt, now) {
+    const { view, input } = this;
+    input.integrate(dt, now);
+    if (view.orbit.autoRotate) view.orbit.update(dt);
+    input.follow(this.operator, now);
+    if (now - this.fpsSince >= 1000) {
+      this.fps = (1000 * this.fpsFrames) / (now - this.fpsSince);
+      this.fpsFrames = 0;
+      this.fpsSince = now;
+    }
+  }
+
+  /** Whether a frame is drawn now: something to draw, and not within the cap's interval. */
+  due(now) {
+    const wanted = this.dirty || this.input.dragging || this.playback.playing || this.redrawAlways
+      || this.view.layers.needsFrame(now);
+    return wanted && !(this.maxfps > 0 && now - this.lastRender < 1000 / this.maxfps - 2);
+  }
+}

@@ -1,0 +1,36 @@
+// window.tandem, for the tests and for scripts (web/test, web/bench): read-only views of what the
+// page shows, and two switches for measuring.
+
+/**
+ * @param parts the page's pieces: `connection`, `view` (SceneView), `loop` (FrameLoop), `panel`
+ *   (StatusPanel), `input` (OperatorInput), `playback`, `hello` (() => the last hello message)
+ */
+export function exposePageApi({ connection, view, loop, panel, input, playback, hello }) {
+  window.tandem = {
+    get connected() { return connection.connected; },
+    get hello() { return hello(); },
+    get status() { return panel.status; },
+    get operator() { return loop.operator; },
+    get fps() { return loop.fps; },
+    /** How the page draws ('layered' or 'direct', see layers.js) and how many edges its last frame drew. */
+    get rendering() { return { mode: view.layered ? 'layered' : 'direct', drawnEdges: view.layers.drawn }; },
+    /** Turns the camera about the scene without end (a frame to draw every time: for measuring). */
+    spin(on) { view.orbit.autoRotate = on; },
+    /** Draws a frame every time, the camera still (for measuring). */
+    redraw(on) { loop.redrawAlways = on; },
+    get frames() { return loop.frames; },
+    get solution() { return playback.solution; },
+    get errors() { return panel.errors.slice(); },
+    get latencies() { return input.latencies; },
+    counts: () => view.trees.counts(),
+    operatorNodes: () => view.trees.operatorNodes(),
+    partPose: () => view.partPose(),
+    /** Where a world point is on the page, in CSS pixels. */
+    screenOf: (x, y, z) => view.screenOf(x, y, z),
+    partScreen: () => { const p = view.part.position; return view.screenOf(p.x, p.y, p.z); },
+    /** The bounding boxes on the page, in CSS pixels, of the meshes that the layered drawing draws
+     * over the trees (layers.js): the part, the start and goal ghosts, transparent obstacles. */
+    overlaidBoxes: () => view.overlaidObjects().map((o) => view.screenBoxOf(o)),
+    screenBoxOf: (object) => view.screenBoxOf(object),
+  };
+}

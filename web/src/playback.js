@@ -1,0 +1,65 @@
+// The solution: its line in the scene, and its playback (a ghost of the part going along it, eight
+// seconds from start to goal) with the play button and the scrubber.
+import { $ } from './dom.js';
+
+export class Playback {
+  /**
+   * @param view the SceneView
+   * @param touch () => void: the picture changed
+   * @param notify (text, cls) => void: a message for the panel
+   */
+  constructor(view, { touch, notify }) {
+    this.view = view;
+    this.touch = touch;
+    this.notify = notify;
+    this.solution = [];
+    this.playing = false;
+    this.t = 0; // in [0, 1]
+    $('play').onclick = () => {
+      this.playing = !this.playing;
+      $('play').textContent = this.playing ? 'pause path' : 'play path';
+    };
+    $('scrub').oninput = (e) => {
+      this.touch();
+      this.playing = false;
+      this.t = e.target.value / 1000;
+      this.showAt(this.t);
+    };
+  }
+
+  /** No solution (a new session, a reset). */
+  clear() {
+    this.touch();
+    this.solution = [];
+    this.view.setSolutionLine(null);
+    this.playing = false;
+    $('path-box').hidden = true;
+  }
+
+  /** A `solution` message's path (configurations). */
+  show(path) {
+    this.clear();
+    if (!path.length) return;
+    this.solution = path;
+    this.view.setSolutionLine(path);
+    $('path-box').hidden = false;
+    this.notify(`solved: a path of ${path.length} states`, 'ok');
+  }
+
+  /** The ghost at t in [0, 1] along the path. */
+  showAt(t) {
+    const s = this.solution;
+    if (s.length < 1) return;
+    const x = t * (s.length - 1);
+    const i = Math.min(Math.floor(x), s.length - 2), f = x - i;
+    this.view.showPathGhost(s[Math.max(i, 0)], s[Math.min(i + 1, s.length - 1)], f);
+  }
+
+  /** A frame's step of the playback, dt seconds on. */
+  advance(dt) {
+    if (!this.playing || this.solution.length <= 1) return;
+    this.t = (this.t + dt / 8) % 1;
+    $('scrub').value = String(Math.round(this.t * 1000));
+    this.showAt(this.t);
+  }
+}
