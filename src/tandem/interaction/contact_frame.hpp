@@ -2,11 +2,11 @@
 // Find_Local_Frame of Blin et al., "I-RRT-C: Interactive Motion Planning with Contact" (IROS 2016),
 // Algorithm 2, line 1: the local frame at the nearest obstacle, computed by the operator thread.
 //
-//   n = (P_n - P_o) / |P_n - P_o|      the obstacle's normal, pointing from the obstacle to the
-//   object delta = n^T (P_n - P_c)            how far the object's nearest point lies from its
-//   centre along n R = GramSchmidt(n) = [i j n]       rotation from the local frame (the tangent
-//   plane is z = 0) to the
-//                                      world frame
+//   n     = (P_n - P_o) / |P_n - P_o|   the obstacle's normal, from the obstacle to the object
+//   delta = n^T (P_n - P_c)             how far the object's nearest point lies from its centre
+//                                       along n
+//   R     = GramSchmidt(n) = [i j n]    rotation from the local frame (the tangent plane is
+//                                       z = 0) to the world frame
 //
 // P_o is the nearest point on the obstacle, P_n the nearest point on the object, P_c = q_device's
 // translation (the object's reference point). All in the world frame.

@@ -7,9 +7,8 @@
 //   planner first asks for it (its cost is reported as operator_seconds). The same seed and source
 //   give the same tree.
 // - LiveFeed: the latest state an OperatorThread published (wall-clock). It records, for each
-// iteration
-//   at which the planner saw a new state, that state: with the planner's seed, this record replays
-//   the run exactly.
+//   iteration at which the planner saw a new state, that state: with the planner's seed, this
+//   record replays the run exactly.
 //
 // Threading: at() is called by the planner thread only.
 

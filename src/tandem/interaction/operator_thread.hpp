@@ -1,7 +1,7 @@
 #pragma once
 // The operator thread of the papers: it runs an OperatorModel at a fixed wall-clock rate and
-// publishes each state into a LatestValue channel for the planner (and reads back the planner's
-// guidance force).
+// publishes each state into a LatestValue channel for the planner. (The I-RRT's guidance force
+// goes back through the live session, not through this thread.)
 //
 // Threading: the constructor starts the thread; stop() (or the destructor) ends and joins it. The
 // model is used only by the thread. published() and achieved_rate() may be read from any thread.

@@ -83,6 +83,7 @@ class Planner : public RoadmapView {
   Planner(const Planner&) = delete;
   Planner& operator=(const Planner&) = delete;
 
+  /// The algorithm ("rrt-connect", "rrt", "irrt"); the registry name says how it was set up.
   virtual std::string_view name() const = 0;
 
   /// One iteration. The first call checks the start and the goal. Returns running until solved;

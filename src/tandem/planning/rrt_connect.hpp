@@ -28,7 +28,7 @@ class RRTConnect final : public Planner {
   RRTConnect(MotionValidator& validator, const Config& start, const Config& goal,
              const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler = nullptr);
 
-  std::string_view name() const override { return "birrt"; }
+  std::string_view name() const override { return "rrt-connect"; }
   std::vector<const Tree*> trees() const override { return {&start_tree_, &goal_tree_}; }
 
  protected:

@@ -34,8 +34,9 @@ struct RunOutcome {
   std::uint64_t tree_digest = 0;
 };
 
-/// Throws InputError for a spec the problem cannot run (an interactive mode without a guide or
-/// trace, a trace that cannot be read, a start or goal that is not valid).
+/// Throws InputError for a spec the problem cannot run (a planner that takes an operator on a
+/// problem without a guide, a trace that cannot be read). An invalid start or goal is an outcome
+/// (status invalid_start, invalid_goal), not an error.
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec);
 /// The same with a checker built for the problem's scene (its counters keep counting).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker);

@@ -48,7 +48,7 @@ std::uint64_t problem_digest(const Problem& problem);
 struct JournalHeader {
   std::string problem;  ///< as given on the command line (a file or a built-in scene's name)
   std::string problem_digest;
-  std::string mode;  ///< to_string(PlannerMode)
+  std::string mode;  ///< the planner's registry name
   PlannerSettings settings;
   std::string operator_description;
   std::string started;  ///< UTC, ISO 8601
