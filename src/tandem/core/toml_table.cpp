@@ -204,4 +204,16 @@ TomlTable TomlTable::array_item(const toml::node& element, std::string_view key,
   return TomlTable(*t, source_, std::move(item_where));
 }
 
+ParamValue toml_param(const toml::node& n) {
+  if (auto i = n.value_exact<std::int64_t>())
+    return *i;
+  if (n.is_floating_point())
+    return *n.value<double>();
+  if (auto b = n.value_exact<bool>())
+    return *b;
+  if (auto t = n.value_exact<std::string>())
+    return *t;
+  return std::string(n.is_array() ? "<an array>" : n.is_table() ? "<a table>" : "<a value>");
+}
+
 }  // namespace tandem

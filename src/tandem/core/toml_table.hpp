@@ -26,11 +26,18 @@
 #include <string_view>
 #include <vector>
 
+#include "tandem/core/parameter.hpp"
+
 namespace tandem {
 
 /// Parses TOML text; `source` names it in messages. Throws InputError "source:line: invalid TOML:
 /// ..." for malformed text.
 toml::table parse_toml(std::string_view text, const std::string& source);
+
+/// A TOML value as a parameter value, in its TOML type (integer, float, boolean, string); an array
+/// or a table becomes a text that no numeric, boolean or choice declaration accepts. The declared
+/// kind and range are checked by whoever sets the tunable (runs/run_spec.hpp, set_tunable).
+ParamValue toml_param(const toml::node& n);
 
 class TomlTable {
  public:

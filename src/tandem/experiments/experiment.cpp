@@ -11,22 +11,9 @@
 namespace tandem {
 namespace {
 
-/// A TOML value as a parameter value (its TOML type; the declared kind is checked by set_tunable).
-ParamValue toml_value(const toml::node& n) {
-  if (auto i = n.value_exact<std::int64_t>())
-    return *i;
-  if (n.is_floating_point())
-    return *n.value<double>();
-  if (auto b = n.value_exact<bool>())
-    return *b;
-  if (auto s = n.value_exact<std::string>())
-    return *s;
-  return std::string(n.is_array() ? "<an array>" : n.is_table() ? "<a table>" : "<a value>");
-}
-
 /// A value of parameter `key`, checked against its declaration (or the registry, for "mode").
 ParamValue read_param(const TomlTable& t, const std::string& key, const toml::node& n) {
-  const ParamValue v = toml_value(n);
+  const ParamValue v = toml_param(n);
   if (key == "mode") {
     const auto* name = std::get_if<std::string>(&v);
     if (name == nullptr || find_planner(*name) == nullptr) {

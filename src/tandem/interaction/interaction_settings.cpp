@@ -1,5 +1,7 @@
 #include "tandem/interaction/interaction_settings.hpp"
 
+#include "tandem/core/enum_names.hpp"
+
 // The tables name only the fields of a ParamSpec that matter for each tunable (designated
 // initializers); the others keep their defaults, which GCC's -Wextra would warn about.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -133,18 +135,14 @@ const ParamTable<InteractionSettings>& interaction_parameters() {
   return kTable;
 }
 
+constexpr EnumNames<IrrtSampling, 4> kSamplingModes{{"mag", "path", "mag+cs", "path+cs"}};
+
 std::string_view to_string(IrrtSampling mode) {
-  static constexpr std::string_view kNames[] = {"mag", "path", "mag+cs", "path+cs"};
-  return kNames[static_cast<std::size_t>(mode)];
+  return kSamplingModes.name(mode);
 }
 
 std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name) {
-  for (auto m :
-       {IrrtSampling::mag, IrrtSampling::path, IrrtSampling::mag_cs, IrrtSampling::path_cs}) {
-    if (to_string(m) == name)
-      return m;
-  }
-  return std::nullopt;
+  return kSamplingModes.parse(name);
 }
 
 double contact_distance(const InteractionSettings& s, const SE3Space& space) {

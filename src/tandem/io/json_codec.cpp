@@ -43,13 +43,7 @@ json interaction_json(const InteractionSettings& i) {
 
 InteractionSettings interaction_from_json(const json& j) {
   InteractionSettings i;
-  for (const auto& p : interaction_parameters()) {
-    const std::string name(p.spec.name);
-    const ParamValue v = param_from_json(j.at(name));
-    if (auto fault = param_fault(p.spec, v))
-      throw std::invalid_argument(name + " " + *fault);
-    p.set(i, normalise_param(p.spec, v));
-  }
+  read_settings_json(interaction_parameters(), j, i);
   return i;
 }
 

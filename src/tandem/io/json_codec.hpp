@@ -26,6 +26,20 @@ nlohmann::json settings_json(const ParamTable<Settings>& table, const Settings& 
   return j;
 }
 
+/// Sets every field `table` declares from `j`: each required and within its declared range.
+/// Throws std::invalid_argument naming the field (nlohmann::json::exception for a missing one).
+template <class Settings>
+void read_settings_json(const ParamTable<Settings>& table, const nlohmann::json& j,
+                        Settings& settings) {
+  for (const auto& p : table) {
+    const std::string name(p.spec.name);
+    const ParamValue v = param_from_json(j.at(name));
+    if (auto fault = param_fault(p.spec, v))
+      throw std::invalid_argument(name + " " + *fault);
+    p.set(settings, normalise_param(p.spec, v));
+  }
+}
+
 /// The declarations as the viewer's tuning panel reads them: name, symbol, label, unit, kind,
 /// min, max (null when unbounded), choices, default, help.
 nlohmann::json param_spec_json(const ParamSpec& spec, const ParamValue& default_value);

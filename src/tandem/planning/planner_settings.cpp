@@ -1,5 +1,7 @@
 #include "tandem/planning/planner_settings.hpp"
 
+#include "tandem/core/enum_names.hpp"
+
 // The tables name only the fields of a ParamSpec that matter for each tunable (designated
 // initializers); the others keep their defaults, which GCC's -Wextra would warn about.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -53,16 +55,14 @@ const ParamTable<PlannerSettings>& planner_parameters() {
   return kTable;
 }
 
+constexpr EnumNames<ExtendMode, 2> kExtendModes{{"classic", "last-valid"}};
+
 std::string_view to_string(ExtendMode mode) {
-  return mode == ExtendMode::last_valid ? "last-valid" : "classic";
+  return kExtendModes.name(mode);
 }
 
 std::optional<ExtendMode> parse_extend_mode(std::string_view name) {
-  if (name == "classic")
-    return ExtendMode::classic;
-  if (name == "last-valid")
-    return ExtendMode::last_valid;
-  return std::nullopt;
+  return kExtendModes.parse(name);
 }
 
 }  // namespace tandem

@@ -333,20 +333,6 @@ std::vector<Config> read_guide(TomlTable& top, const SE3Space& space) {
   return guide;
 }
 
-/// A TOML value as a parameter value, in its TOML type (the declared kind and range are checked
-/// when a run is made from the problem: runs/run_spec.hpp, check_hints()).
-ParamValue toml_param(const toml::node& n) {
-  if (auto i = n.value_exact<std::int64_t>())
-    return *i;
-  if (n.is_floating_point())
-    return *n.value<double>();
-  if (auto b = n.value_exact<bool>())
-    return *b;
-  if (auto t = n.value_exact<std::string>())
-    return *t;
-  return std::string(n.is_array() ? "<an array>" : n.is_table() ? "<a table>" : "<a value>");
-}
-
 /// The [planner] table: the problem's planner (name), time limit and seed, and any declared
 /// tunable by its name (range, extend, goal_bias, alpha, ...).
 ProblemPlannerHints read_planner_hints(TomlTable& top) {

@@ -67,13 +67,7 @@ json settings_json(const PlannerSettings& s) {
 PlannerSettings settings_from_json(const json& j, std::uint64_t seed) {
   PlannerSettings s;
   s.seed = seed;
-  for (const auto& p : planner_parameters()) {
-    const std::string name(p.spec.name);
-    const ParamValue v = param_from_json(j.at(name));
-    if (auto fault = param_fault(p.spec, v))
-      throw std::invalid_argument(name + " " + *fault);
-    p.set(s, normalise_param(p.spec, v));
-  }
+  read_settings_json(planner_parameters(), j, s);
   s.interaction = interaction_from_json(j);
   return s;
 }
