@@ -67,7 +67,7 @@ RunSpec make_spec(const RunArgs& args, const Problem& problem) {
 void add_run_options(CLI::App& app, RunArgs& args) {
   add_problem_args(app, args.problem);
   app.add_option("--mode", args.mode, mode_help())->check(CLI::IsMember(planner_names()));
-  app.add_option("--planner", args.planner, "The same as --mode (for the computer alone)")
+  app.add_option("--planner", args.planner, "The same as --mode")
       ->check(CLI::IsMember(planner_names()));
   app.add_option("--seed", args.seed,
                  "Random seed (default: the problem's, else 1); same seed, same path")
