@@ -37,30 +37,45 @@ std::string RunRecord::param(const std::string& name) const {
   return it == params.end() ? std::string() : it->second;
 }
 
+namespace {
+
+/// Every field of a record with its JSON name, the one list both ways use (nodes_by_source, an
+/// object by source name, is done apart).
+template <class Record, class Visit>
+void visit_fields(Record& r, Visit&& field) {
+  field("problem", r.problem);
+  field("config", r.config);
+  field("params", r.params);
+  field("seed", r.seed);
+  field("time_limit_s", r.time_limit_s);
+  field("status", r.status);
+  field("solved", r.solved);
+  field("path_valid", r.path_valid);
+  field("time_s", r.time_s);
+  field("iterations", r.iterations);
+  field("nodes", r.nodes);
+  field("edges", r.edges);
+  field("collision_checks", r.collision_checks);
+  field("path_length", r.path_length);
+  field("operator_iterations", r.operator_iterations);
+  field("contact_entries", r.contact_entries);
+  field("operator_waits", r.operator_waits);
+  field("tree_digest", r.tree_digest);
+}
+
+std::string source_name(std::size_t k) {
+  return std::string(to_string(static_cast<NodeSource>(k)));
+}
+
+}  // namespace
+
 nlohmann::json record_json(const RunRecord& r) {
   nlohmann::json j;
-  j["problem"] = r.problem;
-  j["config"] = r.config;
-  j["params"] = r.params;
-  j["seed"] = r.seed;
-  j["time_limit_s"] = r.time_limit_s;
-  j["status"] = r.status;
-  j["solved"] = r.solved;
-  j["path_valid"] = r.path_valid;
-  j["time_s"] = r.time_s;
-  j["iterations"] = r.iterations;
-  j["nodes"] = r.nodes;
-  j["edges"] = r.edges;
-  j["collision_checks"] = r.collision_checks;
+  visit_fields(r, [&](const char* name, const auto& value) { j[name] = value; });
   nlohmann::json sources;
   for (std::size_t k = 0; k < kNodeSources; ++k)
-    sources[std::string(to_string(static_cast<NodeSource>(k)))] = r.nodes_by_source[k];
+    sources[source_name(k)] = r.nodes_by_source[k];
   j["nodes_by_source"] = sources;
-  j["path_length"] = r.path_length;
-  j["operator_iterations"] = r.operator_iterations;
-  j["contact_entries"] = r.contact_entries;
-  j["operator_waits"] = r.operator_waits;
-  j["tree_digest"] = r.tree_digest;
   return j;
 }
 
@@ -72,29 +87,13 @@ std::optional<RunRecord> parse_record(const std::string& line) {
   try {
     const nlohmann::json j = nlohmann::json::parse(line);
     RunRecord r;
-    r.problem = j.at("problem").get<std::string>();
-    r.config = j.at("config").get<std::string>();
-    r.params = j.at("params").get<std::map<std::string, std::string>>();
-    r.seed = j.at("seed").get<std::uint64_t>();
-    r.time_limit_s = j.at("time_limit_s").get<double>();
-    r.status = j.at("status").get<std::string>();
-    r.solved = j.at("solved").get<bool>();
-    r.path_valid = j.at("path_valid").get<bool>();
-    r.time_s = j.at("time_s").get<double>();
-    r.iterations = j.at("iterations").get<std::uint64_t>();
-    r.nodes = j.at("nodes").get<std::size_t>();
-    r.edges = j.at("edges").get<std::size_t>();
-    r.collision_checks = j.at("collision_checks").get<std::uint64_t>();
-    for (std::size_t k = 0; k < kNodeSources; ++k) {
-      r.nodes_by_source[k] = j.at("nodes_by_source")
-                                 .at(std::string(to_string(static_cast<NodeSource>(k))))
-                                 .get<std::size_t>();
-    }
-    r.path_length = j.at("path_length").get<double>();
-    r.operator_iterations = j.at("operator_iterations").get<std::uint64_t>();
-    r.contact_entries = j.at("contact_entries").get<std::uint64_t>();
-    r.operator_waits = j.value("operator_waits", std::uint64_t{0});
-    r.tree_digest = j.at("tree_digest").get<std::string>();
+    visit_fields(r, [&](const char* name, auto& value) {
+      using T = std::decay_t<decltype(value)>;
+      // Records written before operator_waits existed read as 0.
+      value = std::string_view(name) == "operator_waits" ? j.value(name, T{}) : j.at(name).get<T>();
+    });
+    for (std::size_t k = 0; k < kNodeSources; ++k)
+      r.nodes_by_source[k] = j.at("nodes_by_source").at(source_name(k)).get<std::size_t>();
     return r;
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;
