@@ -51,6 +51,11 @@ class IRRT final : public Planner {
   std::string_view name() const override { return "irrt"; }
   std::vector<const Tree*> trees() const override { return {&tree_}; }
   const std::vector<NodeLabel>& labels() const { return labels_; }
+  std::optional<double> node_label(std::size_t tree, NodeId node) const override {
+    if (tree != 0 || node >= labels_.size())
+      return std::nullopt;
+    return labels_[node].distance_to_goal;
+  }
   /// The pseudo-forces of the last iteration.
   const Twist& attractive_force() const { return f_a_; }
   const Twist& user_force() const { return f_u_; }

@@ -103,6 +103,13 @@ class Planner : public RoadmapView {
   double range() const { return range_; }
   /// The trees, for display and statistics; the first is rooted at the start.
   virtual std::vector<const Tree*> trees() const = 0;
+  /// A value per node that a viewer may colour by (the I-RRT's distance-to-goal label), in scene
+  /// units; nothing for planners without one.
+  virtual std::optional<double> node_label(std::size_t tree, NodeId node) const {
+    (void)tree;
+    (void)node;
+    return std::nullopt;
+  }
   /// Metric distance from q to the nearest node of the tree rooted at the start: the tree the
   /// operator carries toward the goal, which a watching operator keeps up with.
   double distance_to_roadmap(const Config& q) const override;

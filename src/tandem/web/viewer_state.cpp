@@ -4,7 +4,6 @@
 
 #include "tandem/io/json_codec.hpp"
 #include "tandem/io/path_file.hpp"
-#include "tandem/planning/irrt.hpp"
 #include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
@@ -37,7 +36,6 @@ void ViewerState::restarted() {
 
 void ViewerState::update(const Planner& planner, std::string status, std::string op) {
   const std::vector<const Tree*> trees = planner.trees();
-  const auto* irrt = dynamic_cast<const IRRT*>(&planner);
   const auto extent = static_cast<float>(problem_.space.max_extent());
   const std::lock_guard lock(mutex_);
   trees_.resize(trees.size());
@@ -51,9 +49,8 @@ void ViewerState::update(const Planner& planner, std::string status, std::string
           {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
       copy.parents.push_back(tree.parent[i]);
       copy.sources.push_back(static_cast<std::uint8_t>(tree.source[i]));
-      copy.labels.push_back(irrt != nullptr && i < irrt->labels().size()
-                                ? static_cast<float>(irrt->labels()[i].distance_to_goal) / extent
-                                : -1.0f);
+      const auto label = planner.node_label(k, static_cast<NodeId>(i));
+      copy.labels.push_back(label ? static_cast<float>(*label) / extent : -1.0f);
     }
   }
   if (status != status_) {
