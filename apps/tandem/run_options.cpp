@@ -16,7 +16,15 @@ bool in_table(const auto& table, std::string_view name) {
 /// "<help> (default D; R)" for a tunable's option.
 std::string option_help(const Param<RunSpec>& p) {
   std::string h(p.spec.help);
-  h += " (default " + format_param(p.get(RunSpec{}));
+  const ParamValue base = p.get(RunSpec{});
+  h += " (default " + format_param(base);
+  // Planners whose preset starts from another value (interactive-contact: contact on).
+  for (const PlannerEntry& e : planner_registry()) {
+    RunSpec preset;
+    preset.settings = default_settings(e.name);
+    if (const ParamValue v = p.get(preset); v != base)
+      h += ", " + format_param(v) + " for " + std::string(e.name);
+  }
   if (p.spec.kind == ParamKind::real || p.spec.kind == ParamKind::integer ||
       p.spec.kind == ParamKind::choice)
     h += "; " + describe_range(p.spec);

@@ -25,13 +25,12 @@ void add_sharing(ParamTable<S>& t) {
        .group = "sharing",
        .live = true},
       &S::alpha));
-  t.push_back(boolean_param<S>(
-      {.name = "contact",
-       .label = "contact sampling",
-       .help = "Contact sampling near obstacles (Alg. 3); on by default in interactive-contact",
-       .group = "sharing",
-       .live = true},
-      &S::contact));
+  t.push_back(boolean_param<S>({.name = "contact",
+                                .label = "contact sampling",
+                                .help = "Contact sampling near obstacles (Alg. 3)",
+                                .group = "sharing",
+                                .live = true},
+                               &S::contact));
   t.push_back(integer_param<S>(
       {.name = "contact_samples",
        .symbol = "N",
