@@ -89,10 +89,7 @@ RunSpec live_spec(InteractiveArgs& args, const Problem& problem) {
   if (!args.run.mode)
     args.run.mode = "interactive-contact";
   RunSpec spec = make_spec(args.run, problem);
-  if (!uses_operator(spec)) {
-    throw InputError("--mode",
-                     "a live session needs a planner that takes an operator, not " + spec.mode);
-  }
+  require_live_planner(spec);
   if (!args.run.time_limit)
     spec.time_limit = 600.0;
   CollisionChecker checker(problem.scene);

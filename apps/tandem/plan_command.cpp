@@ -74,10 +74,10 @@ PlannedPath finish_path(const PlanArgs& args, const Problem& problem, const RunS
 }
 
 /// The tunables the planner read, at top level, with the scene-scaled values resolved.
-void add_settings(nlohmann::json& j, const Problem& problem, const RunSpec& spec,
-                  const RunOutcome& run) {
-  for (const auto& [param, value] : used_tunables(spec))
-    j[std::string(param->name)] = param_json(value);
+void add_settings(nlohmann::json& j, const std::map<std::string, ParamValue>& tunables,
+                  const Problem& problem, const RunSpec& spec, const RunOutcome& run) {
+  for (const auto& [name, value] : tunables)
+    j[name] = param_json(value);
   const InteractionSettings& i = spec.settings.interaction;
   j["range"] = run.range;
   if (j.contains("contact_distance"))
@@ -91,14 +91,12 @@ void add_settings(nlohmann::json& j, const Problem& problem, const RunSpec& spec
 nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
                          const RunOutcome& run, const PlannedPath& planned) {
   const bool solved = run.status == PlannerStatus::solved;
-  std::map<std::string, ParamValue> given;
-  for (const auto& [param, value] : used_tunables(spec))
-    given[std::string(param->name)] = value;
-  nlohmann::json j = record_json(make_record(problem.name, spec.mode, given, spec.settings.seed,
+  const std::map<std::string, ParamValue> tunables = used_tunables(spec);
+  nlohmann::json j = record_json(make_record(problem.name, spec.mode, tunables, spec.settings.seed,
                                              spec.time_limit, run, solved));
   j["source"] = problem.source;
   j["mode"] = spec.mode;
-  add_settings(j, problem, spec, run);
+  add_settings(j, tunables, problem, spec, run);
   j["path_length"] = solved ? nlohmann::json(path_length(problem.space, planned.path)) : nullptr;
   j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nullptr;
   j["path_states"] = planned.path.size();

@@ -9,10 +9,6 @@ namespace {
 
 constexpr double kDefaultTimeLimit = 60.0;
 
-bool in_table(const auto& table, std::string_view name) {
-  return find_param(table, name) != nullptr;
-}
-
 /// "<help> (default D; R)" for a tunable's option.
 std::string option_help(const Param<RunSpec>& p) {
   std::string h(p.spec.help);
@@ -28,13 +24,8 @@ std::string option_help(const Param<RunSpec>& p) {
   if (p.spec.kind == ParamKind::real || p.spec.kind == ParamKind::integer ||
       p.spec.kind == ParamKind::choice)
     h += "; " + describe_range(p.spec);
-  if (!p.spec.group.empty()) {
-    h += "; for";
-    for (const PlannerEntry& e : planner_registry()) {
-      if (planner_uses(e.name, p.spec))
-        h += " " + std::string(e.name);
-    }
-  }
+  if (!p.spec.group.empty())
+    h += "; for " + planner_users(p.spec);
   return h + ")";
 }
 
@@ -52,9 +43,7 @@ RunSpec make_spec(const RunArgs& args, const Problem& problem) {
     throw InputError("--mode", "give --mode or --planner, not both");
   const std::string mode =
       args.mode.value_or(args.planner.value_or(problem.hints.planner.value_or("birrt")));
-  if (find_planner(mode) == nullptr)
-    throw InputError("--mode",
-                     "unknown planner '" + mode + "' (known: " + planner_names_text() + ")");
+  // --mode and --planner are checked by the options, the problem's planner by check_hints.
   RunSpec spec = default_spec(mode, problem.hints);
   if (args.seed)
     spec.settings.seed = *args.seed;
@@ -95,7 +84,7 @@ void add_run_options(CLI::App& app, RunArgs& args) {
         option_help(p));
     static constexpr const char* kTypes[] = {"REAL", "INT", "BOOL", "CHOICE", "TEXT"};
     option->type_name(kTypes[static_cast<std::size_t>(p.spec.kind)]);
-    if (!in_table(planner_parameters(), name))
+    if (find_param(planner_parameters(), name) == nullptr)
       option->group(human);
   }
 }

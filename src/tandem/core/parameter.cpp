@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -70,15 +69,14 @@ std::string ParamSpec::option() const {
 
 std::string describe_range(const ParamSpec& s) {
   switch (s.kind) {
-    case ParamKind::real: {
-      const std::string r = interval(s);
-      return r.empty() ? "a finite number"
-                       : "a number " + (r[0] == '[' || r[0] == '(' ? "in " + r : r);
-    }
+    case ParamKind::real:
     case ParamKind::integer: {
+      const bool whole = s.kind == ParamKind::integer;
       const std::string r = interval(s);
-      return r.empty() ? "a whole number"
-                       : "a whole number " + (r[0] == '[' || r[0] == '(' ? "in " + r : r);
+      if (r.empty())
+        return whole ? "a whole number" : "a finite number";
+      return (whole ? "a whole number" : "a number") +
+             std::string(r[0] == '[' || r[0] == '(' ? " in " : " ") + r;
     }
     case ParamKind::boolean:
       return "true or false";

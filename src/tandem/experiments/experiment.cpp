@@ -17,8 +17,7 @@ ParamValue read_param(const TomlTable& t, const std::string& key, const toml::no
   if (key == "mode") {
     const auto* name = std::get_if<std::string>(&v);
     if (name == nullptr || find_planner(*name) == nullptr) {
-      throw InputError(
-          t.at(n), "unknown mode '" + format_param(v) + "' (known: " + planner_names_text() + ")");
+      throw InputError(t.at(n), "mode: " + unknown_planner(format_param(v)));
     }
     return v;
   }

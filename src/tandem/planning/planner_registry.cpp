@@ -96,11 +96,11 @@ std::vector<std::string> planner_names() {
   return names;
 }
 
-std::string planner_names_text() {
-  std::string text;
+std::string unknown_planner(std::string_view name) {
+  std::string known;
   for (const PlannerEntry& e : kRegistry)
-    text += (text.empty() ? "" : ", ") + std::string(e.name);
-  return text;
+    known += (known.empty() ? "" : ", ") + std::string(e.name);
+  return "unknown planner '" + std::string(name) + "' (known: " + known + ")";
 }
 
 PlannerSettings default_settings(std::string_view name) {
@@ -116,10 +116,8 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
                                       const PlannerSettings& settings,
                                       const Interaction* interaction) {
   const PlannerEntry* e = find_planner(name);
-  if (e == nullptr) {
-    throw std::invalid_argument("unknown planner '" + std::string(name) +
-                                "' (known: " + planner_names_text() + ")");
-  }
+  if (e == nullptr)
+    throw std::invalid_argument(unknown_planner(name));
   const bool has_operator = interaction != nullptr && interaction->feed != nullptr;
   if (e->uses_operator && !has_operator)
     throw std::invalid_argument("planner '" + std::string(name) + "' needs an operator");
@@ -138,17 +136,13 @@ bool planner_uses(std::string_view name, const ParamSpec& spec) {
          std::find(e->groups.begin(), e->groups.end(), spec.group) != e->groups.end();
 }
 
-std::vector<const ParamSpec*> planner_tunables(std::string_view name) {
-  std::vector<const ParamSpec*> specs;
-  for (const auto& p : planner_parameters()) {
-    if (planner_uses(name, p.spec))
-      specs.push_back(&p.spec);
+std::string planner_users(const ParamSpec& spec) {
+  std::string users;
+  for (const PlannerEntry& e : kRegistry) {
+    if (planner_uses(e.name, spec))
+      users += (users.empty() ? "" : ", ") + std::string(e.name);
   }
-  for (const auto& p : interaction_parameters()) {
-    if (planner_uses(name, p.spec))
-      specs.push_back(&p.spec);
-  }
-  return specs;
+  return users;
 }
 
 }  // namespace tandem

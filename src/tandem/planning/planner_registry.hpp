@@ -45,8 +45,8 @@ const std::vector<PlannerEntry>& planner_registry();
 const PlannerEntry* find_planner(std::string_view name);
 /// The registered names, in registry order.
 std::vector<std::string> planner_names();
-/// "birrt, rrt, ..." for messages and help.
-std::string planner_names_text();
+/// "unknown planner 'NAME' (known: birrt, rrt, ...)": the one message for a name not registered.
+std::string unknown_planner(std::string_view name);
 
 /// PlannerSettings{} with the planner's preset applied.
 PlannerSettings default_settings(std::string_view name);
@@ -61,7 +61,7 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
 /// Whether planner `name` reads the tunable.
 bool planner_uses(std::string_view name, const ParamSpec& spec);
 
-/// The declared tunables `name` reads (of every family), in table order.
-std::vector<const ParamSpec*> planner_tunables(std::string_view name);
+/// "interactive, interactive-contact": the registered planners that read the tunable.
+std::string planner_users(const ParamSpec& spec);
 
 }  // namespace tandem

@@ -95,13 +95,8 @@ void require_used(const RunSpec& spec, std::string_view name, const std::string&
   const Param<RunSpec>* p = find_param(run_tunables(), name);
   if (p == nullptr || planner_uses(spec.mode, p->spec))
     return;
-  std::string users;
-  for (const PlannerEntry& e : planner_registry()) {
-    if (planner_uses(e.name, p->spec))
-      users += (users.empty() ? "" : ", ") + std::string(e.name);
-  }
   throw InputError(where, "planner '" + spec.mode + "' does not use " + std::string(name) +
-                              " (used by " + users + ")");
+                              " (used by " + planner_users(p->spec) + ")");
 }
 
 bool uses_operator(const RunSpec& spec) {
@@ -110,10 +105,9 @@ bool uses_operator(const RunSpec& spec) {
 }
 
 RunSpec default_spec(std::string_view mode, const ProblemPlannerHints& hints) {
-  if (find_planner(mode) == nullptr) {
-    throw InputError("mode", "unknown planner '" + std::string(mode) +
-                                 "' (known: " + planner_names_text() + ")");
-  }
+  const PlannerEntry* entry = find_planner(mode);
+  if (entry == nullptr)
+    throw InputError("mode", unknown_planner(mode));
   RunSpec spec;
   spec.mode = std::string(mode);
   spec.settings = default_settings(mode);
@@ -122,7 +116,7 @@ RunSpec default_spec(std::string_view mode, const ProblemPlannerHints& hints) {
   if (hints.time_limit)
     spec.time_limit = *hints.time_limit;
   // OMPL.app gives ranges per planner: RRT's for rrt, RRT-Connect's for the others.
-  const auto range = hints.range.find(std::string(find_planner(mode)->ompl_range));
+  const auto range = hints.range.find(std::string(entry->ompl_range));
   if (range != hints.range.end())
     spec.settings.range = range->second;
   for (const auto& [name, value, where] : hints.values)
@@ -131,18 +125,16 @@ RunSpec default_spec(std::string_view mode, const ProblemPlannerHints& hints) {
 }
 
 void check_hints(const ProblemPlannerHints& hints, const std::string& source) {
-  if (hints.planner && find_planner(*hints.planner) == nullptr) {
-    throw InputError(source, "planner.name: unknown planner '" + *hints.planner +
-                                 "' (known: " + planner_names_text() + ")");
-  }
+  if (hints.planner && find_planner(*hints.planner) == nullptr)
+    throw InputError(source, "planner.name: " + unknown_planner(*hints.planner));
   (void)default_spec("birrt", hints);
 }
 
-std::vector<std::pair<const ParamSpec*, ParamValue>> used_tunables(const RunSpec& spec) {
-  std::vector<std::pair<const ParamSpec*, ParamValue>> out;
+std::map<std::string, ParamValue> used_tunables(const RunSpec& spec) {
+  std::map<std::string, ParamValue> out;
   for (const auto& p : run_tunables()) {
     if (planner_uses(spec.mode, p.spec))
-      out.emplace_back(&p.spec, p.get(spec));
+      out.emplace(p.spec.name, p.get(spec));
   }
   return out;
 }

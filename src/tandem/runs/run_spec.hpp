@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,7 +61,7 @@ void require_used(const RunSpec& spec, std::string_view name, const std::string&
 /// Whether the spec's planner takes an operator.
 bool uses_operator(const RunSpec& spec);
 
-/// The tunables the spec's planner reads, with their values, as JSON-ready pairs.
-std::vector<std::pair<const ParamSpec*, ParamValue>> used_tunables(const RunSpec& spec);
+/// The tunables the spec's planner reads, by name, with their values.
+std::map<std::string, ParamValue> used_tunables(const RunSpec& spec);
 
 }  // namespace tandem

@@ -13,10 +13,7 @@ namespace {
 
 std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunSpec& spec,
                                               bool spacemouse) {
-  if (!uses_operator(spec)) {
-    throw InputError("--mode",
-                     "a live session needs a planner that takes an operator, not " + spec.mode);
-  }
+  require_live_planner(spec);
   std::shared_ptr<const OperatorSource> simulated;
   if (spec.operator_name != "browser")
     simulated = make_operator(problem, spec, OperatorClock::seconds);
@@ -41,6 +38,13 @@ JournalHeader header_for(const Problem& problem, const RunSpec& spec, const Live
 }
 
 }  // namespace
+
+void require_live_planner(const RunSpec& spec) {
+  if (!uses_operator(spec)) {
+    throw InputError("--mode",
+                     "a live session needs a planner that takes an operator, not " + spec.mode);
+  }
+}
 
 std::string utc_now_iso8601() {
   const std::time_t now = std::time(nullptr);
@@ -217,7 +221,6 @@ void LiveSession::start_operator() {
 
 bool LiveSession::step_planner(Loop& loop) {
   static constexpr auto kOperator = static_cast<std::size_t>(NodeSource::operator_);
-  loop.stepped_by_hand = false;
   if (paused_) {
     --steps_requested_;
     loop.stepped_by_hand = true;

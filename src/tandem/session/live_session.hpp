@@ -181,6 +181,10 @@ class LiveSession {
   LiveProgress progress_;  ///< guarded by pending_mutex_
 };
 
+/// Throws InputError (naming --mode) unless the spec's planner takes an operator: the one check
+/// for every way a live session is started.
+void require_live_planner(const RunSpec& spec);
+
 /// The current UTC time, ISO 8601 (for journal headers).
 std::string utc_now_iso8601();
 
