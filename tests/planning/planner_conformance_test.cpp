@@ -30,43 +30,25 @@ Problem closed_with_guide() {
   return p;
 }
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
-
 /// A registered planner on a problem, with a simulated operator along the problem's guide when
 /// the planner takes one.
-class Harness {
+class Harness : public test::ProblemFixture {
  public:
-  Harness(const std::string& name, Problem problem, std::uint64_t seed)
-      : problem_(std::move(problem)),
-        checker_(problem_.scene),
-        validator_(problem_.space, checker_) {
-    RunSpec spec = default_spec(name, problem_.hints);
+  Harness(const std::string& name, Problem p, std::uint64_t seed) : ProblemFixture(std::move(p)) {
+    RunSpec spec = default_spec(name, problem.hints);
     spec.settings.seed = seed;
     spec.operator_seed = seed;
     if (uses_operator(spec)) {
       feed_ = std::make_unique<VirtualTimeFeed>(
-          OperatorModel(checker_, make_operator(problem_, spec)), spec.operator_period);
+          OperatorModel(checker, make_operator(problem, spec)), spec.operator_period);
       interaction_.feed = feed_.get();
     }
-    planner_ = make_planner(name, validator_, problem_.start, problem_.goal, spec.settings,
+    planner_ = make_planner(name, validator, problem.start, problem.goal, spec.settings,
                             feed_ ? &interaction_ : nullptr);
   }
   Planner& planner() { return *planner_; }
-  const Problem& problem() const { return problem_; }
-  MotionValidator& validator() { return validator_; }
 
  private:
-  Problem problem_;
-  CollisionChecker checker_;
-  MotionValidator validator_;
   std::unique_ptr<VirtualTimeFeed> feed_;
   Interaction interaction_;
   std::unique_ptr<Planner> planner_;
@@ -93,10 +75,10 @@ TEST_P(Conformance, SolvesWithAPathValidAlongEveryMotion) {
   EXPECT_EQ(h.planner().status(), PlannerStatus::solved);
   const std::vector<Config>& path = h.planner().solution();
   ASSERT_GE(path.size(), 2u);
-  EXPECT_EQ(path.front(), h.problem().start);
-  EXPECT_EQ(path.back(), h.problem().goal);
-  CollisionChecker fresh(h.problem().scene);
-  MotionValidator check(h.problem().space, fresh);
+  EXPECT_EQ(path.front(), h.problem.start);
+  EXPECT_EQ(path.back(), h.problem.goal);
+  CollisionChecker fresh(h.problem.scene);
+  MotionValidator check(h.problem.space, fresh);
   EXPECT_TRUE(check_path(path, check).valid) << check_path(path, check).describe();
 }
 
@@ -116,7 +98,7 @@ TEST_P(Conformance, StatisticsAgreeWithTheTrees) {
         ++roots;
         continue;
       }
-      EXPECT_TRUE(h.validator().check_motion(tree->nodes[tree->parent[i]], tree->nodes[i]));
+      EXPECT_TRUE(h.validator.check_motion(tree->nodes[tree->parent[i]], tree->nodes[i]));
     }
   }
   EXPECT_EQ(s.nodes, nodes);
@@ -198,7 +180,7 @@ TEST_P(Conformance, InvalidEndpointsAreStatusesAndStepDoesNothingAfterTheEnd) {
 TEST_P(Conformance, TheRegistryRefusesAMisusedOperator) {
   const PlannerEntry& e = *find_planner(GetParam());
   test::ProblemFixture f(test::detour_problem());
-  const std::string message = error_of([&] {
+  const std::string message = test::error_message<std::invalid_argument>([&] {
     VirtualTimeFeed* none = nullptr;
     Interaction interaction{none};
     (void)make_planner(e.name, f.validator, f.problem.start, f.problem.goal, {},
@@ -219,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(EveryRegisteredPlanner, Conformance, ::testing::ValuesI
 
 TEST(Registry, UnknownPlannerNamesTheKnownOnes) {
   test::ProblemFixture f(test::detour_problem());
-  EXPECT_THAT(error_of([&] {
+  EXPECT_THAT(test::error_message<std::invalid_argument>([&] {
                 (void)make_planner("teleport", f.validator, f.problem.start, f.problem.goal, {});
               }),
               HasSubstr("unknown planner 'teleport' (known: birrt, rrt, interactive"));
