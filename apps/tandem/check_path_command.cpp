@@ -13,13 +13,16 @@ namespace {
 struct CheckArgs {
   ProblemArgs problem;
   std::string path_file;
+  std::string validation = "exact";
+  double tolerance = 0.0;
 };
 
 int run_check(const CheckArgs& args) {
   const Problem problem = load_problem(args.problem);
   const Path path = read_path_file(args.path_file, problem.space);
   CollisionChecker checker(problem.scene);
-  MotionValidator validator(problem.space, checker);
+  MotionValidator validator(problem.space, checker,
+                            {*parse_motion_validation(args.validation), args.tolerance});
   const PathCheck check = check_path(path, validator);
   if (!check.valid) {
     std::cout << args.path_file << ": invalid at index " << check.index << ": " << check.describe()
@@ -45,10 +48,21 @@ Command add_check_path_command(CLI::App& app) {
   app.add_option("PATHFILE", args->path_file,
                  "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
       ->required();
+  app.add_option("--validation", args->validation,
+                 "exact: every motion collision-free along its whole length, no state closer than "
+                 "the tolerance to an obstacle; discrete: every state at the problem's "
+                 "resolution (OMPL's check)")
+      ->check(CLI::IsMember({"exact", "discrete"}))
+      ->capture_default_str();
+  app.add_option("--tolerance", args->tolerance,
+                 "Exact validation: closer than this counts as contact (0: 1e-5 x the bounds' "
+                 "diagonal)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.footer(
-      "Checks every state (bounds, collision) and every motion between consecutive states at the "
-      "problem's "
-      "resolution.\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
+      "Checks every state (bounds, collision) and every motion between consecutive states: the "
+      "whole continuous motion (exact, the default) or the states at the problem's resolution "
+      "(discrete).\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
       "input.");
   return [args] { return run_check(*args); };
 }

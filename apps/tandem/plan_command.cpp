@@ -152,7 +152,9 @@ int run_plan(const PlanArgs& args) {
   require_valid_endpoints(problem, checker);
   const RunOutcome run = execute_run(problem, spec, checker);
   const bool solved = run.status == PlannerStatus::solved;
-  MotionValidator validator(problem.space, checker);
+  // The path is simplified and checked the way the planner checked its motions.
+  MotionValidator validator(problem.space, checker,
+                            {spec.settings.validation, spec.settings.tolerance});
   const PlannedPath planned =
       solved ? finish_path(args, problem, spec, run, validator) : PlannedPath{};
   if (!args.svg.empty())

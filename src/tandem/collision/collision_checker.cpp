@@ -8,6 +8,7 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -111,7 +112,30 @@ struct SharedGeometry {
   std::vector<FclPart> object;
   std::vector<FclPart> obstacles;
   std::vector<std::string> obstacle_names;
+  double object_radius = 0.0;
 };
+
+/// The largest distance from the body frame's origin to a point of a part posed at X_BP.
+double part_radius(const Geometry& g, const Geom& geom, const Eigen::Isometry3d& X_BP) {
+  if (const auto* m = std::get_if<MeshShape>(&g)) {
+    double r = 0.0;
+    for (const auto& v : m->mesh->vertices)
+      r = std::max(r, (X_BP * v).norm());
+    return r;
+  }
+  if (const auto* s = std::get_if<Sphere>(&g))
+    return X_BP.translation().norm() + s->radius;
+  // Boxes and cylinders: the corners of their local bounding box enclose them.
+  const Box3 box = local_box(geom);
+  double r = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    Eigen::Vector3d p = box.centre;
+    for (int i = 0; i < 3; ++i)
+      p[i] += (corner >> i & 1) != 0 ? box.half[i] : -box.half[i];
+    r = std::max(r, (X_BP * p).norm());
+  }
+  return r;
+}
 
 }  // namespace
 
@@ -120,11 +144,17 @@ struct CollisionChecker::Impl {
   CollisionCounters counters;
   fcl::CollisionRequestd collision_request;
   fcl::DistanceRequestd distance_request;
+  fcl::DistanceRequestd clearance_request;
 
   explicit Impl(std::shared_ptr<const SharedGeometry> g) : geometry(std::move(g)) {
     collision_request.num_max_contacts = 1;
     collision_request.enable_contact = false;
     distance_request.enable_nearest_points = true;
+    // FCL prunes a pair of bounding volumes at distance c from the best distance d found so far
+    // when c >= d - abs_err and c * (1 + rel_err) >= d: with abs_err this large only the relative
+    // rule is left, which makes the result a lower bound within the factor 1 + rel_err.
+    clearance_request.rel_err = kClearanceRelativeError;
+    clearance_request.abs_err = std::numeric_limits<double>::max();
   }
 
   Eigen::Isometry3d world_pose(const FclPart& part, const Eigen::Isometry3d& X_WO) const {
@@ -139,6 +169,7 @@ CollisionChecker::CollisionChecker(const Scene& scene) {
     const bool identity = part.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
     g->object.push_back({geom, part.pose, identity, is_mesh(part.geometry),
                          is_sphere(part.geometry), local_box(*geom), 0});
+    g->object_radius = std::max(g->object_radius, part_radius(part.geometry, *geom, part.pose));
   }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Body& body = scene.obstacles[i];
@@ -244,6 +275,40 @@ NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
     }
   }
   return best;
+}
+
+double CollisionChecker::clearance_bound(const Config& q, double cap) {
+  Impl& m = *impl_;
+  ++m.counters.clearance_queries;
+  constexpr double kGrow = 1.0 + kClearanceRelativeError;
+  double best = cap;
+  const Eigen::Isometry3d X_WO = q.pose();
+  for (const auto& part : m.geometry->object) {
+    const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
+    const Box3 box = part.box.transformed(X_WP);
+    for (const auto& obstacle : m.geometry->obstacles) {
+      if (box.distance_to(obstacle.box) >= best)
+        continue;
+      // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far
+      // apart; what it returns, d, bounds the true distance from below as d / (1 + e).
+      fcl::DistanceResultd result(best * kGrow);
+      try {
+        fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
+                      m.clearance_request, result);
+      } catch (const std::exception&) {
+        ++m.counters.fcl_errors;
+        return 0.0;
+      }
+      best = std::min(best, result.min_distance / kGrow);
+      if (best <= 0.0)
+        return best;
+    }
+  }
+  return best;
+}
+
+double CollisionChecker::object_radius() const {
+  return impl_->geometry->object_radius;
 }
 
 std::size_t CollisionChecker::obstacle_count() const {

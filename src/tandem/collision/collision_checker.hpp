@@ -24,6 +24,7 @@ namespace tandem {
 struct CollisionCounters {
   std::uint64_t state_checks = 0;      ///< is_collision_free() calls
   std::uint64_t distance_queries = 0;  ///< nearest_obstacle() calls
+  std::uint64_t clearance_queries = 0;  ///< clearance_bound() calls
   std::uint64_t fcl_errors =
       0;  ///< exceptions thrown by FCL and caught here (counted as collision)
 };
@@ -53,6 +54,23 @@ class CollisionChecker {
 
   /// The obstacle nearest to the object at q, with the nearest points.
   NearestObstacle nearest_obstacle(const Config& q);
+
+  /// A lower bound on the distance between the object at q and every obstacle, capped: the result
+  /// c satisfies c <= min(cap, true distance), and c < cap only when something is closer than cap.
+  /// It is <= 0 when the object collides (FCL's mesh distance is 0 for intersecting triangles,
+  /// negative for penetrating primitives); an FCL exception gives 0. Cheaper than
+  /// nearest_obstacle(): FCL prunes with a relative error (kClearanceRelativeError) and every BV
+  /// pair farther than the cap, and boxes prune whole pairs of parts. The continuous motion
+  /// validation certifies motions with it.
+  double clearance_bound(const Config& q, double cap);
+
+  /// FCL's relative error in clearance_bound(): true distance >= returned / (1 + error).
+  static constexpr double kClearanceRelativeError = 0.25;
+
+  /// The largest distance from the object frame's origin (the configuration's reference point) to
+  /// any point of the object: no point moves more than |dt| + angle * radius in a motion that
+  /// translates by dt and turns by angle about a fixed axis.
+  double object_radius() const;
 
   std::size_t obstacle_count() const;
   const std::string& obstacle_name(std::size_t index) const;

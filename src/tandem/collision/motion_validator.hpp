@@ -1,15 +1,31 @@
 #pragma once
-// Validity of configurations (inside the bounds and collision-free) and of motions between them,
-// checked at the space's resolution.
+// Validity of configurations (inside the bounds and collision-free) and of motions between them.
 //
-// A motion from a to b is checked at the configurations space.step(a, b, k, n), k = 1..n, with
-// n = space.segment_count(a, b). step() is symmetric, so a motion checked in either direction
-// visits the same configurations, and `tandem check-path` re-checks exactly what the planner
-// checked.
+// Two ways to check a motion (MotionValidation):
+// - exact: the whole continuous motion a -> b is certified collision-free, as in
+//   Schwarzer, Saha and Latombe, "Adaptive dynamic collision checking for single and multiple
+//   articulated robots in complex environments" (IEEE TRO 2005) and hpp-core's continuous
+//   validation. The motion translates by dt and turns by an angle theta about a fixed axis
+//   (slerp), both at constant speed, so between fractions s and s' no point of the object moves
+//   more than L |s - s'|, L = |dt| + theta * R (R: CollisionChecker::object_radius()). A
+//   configuration at s whose clearance is at least c is therefore the centre of a collision-free
+//   stretch of half-width c / L; the validator bisects the motion, each clearance bound
+//   (CollisionChecker::clearance_bound) certifying a stretch, until the stretches cover [0, 1].
+//   A configuration closer to an obstacle than the tolerance counts as contact: invalid. So a
+//   valid configuration has a clearance of at least the tolerance, and every configuration of a
+//   valid motion is collision-free.
+// - discrete (the default for now; OMPL's DiscreteMotionValidator): the motion is checked at the
+//   configurations space.step(a, b, k, n), k = 1..n, with n = space.segment_count(a, b) (1% of
+//   the bounds' diagonal and of pi by default); it can step over an obstacle thinner than a step.
+//   step() is symmetric, so a motion checked in either direction visits the same
+//   configurations, and `tandem check-path --validation discrete` re-checks exactly what the
+//   planner checked.
 //
 // Threading: not thread-safe (it drives one CollisionChecker); one per thread.
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "tandem/collision/collision_checker.hpp"
@@ -17,6 +33,19 @@
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
+
+enum class MotionValidation : std::uint8_t { exact, discrete };
+
+/// "exact" or "discrete".
+std::string_view to_string(MotionValidation v);
+std::optional<MotionValidation> parse_motion_validation(std::string_view name);
+
+struct ValidationSettings {
+  MotionValidation mode = MotionValidation::discrete;
+  /// Closer than this to an obstacle counts as contact (exact mode); 0: 1e-5 x the bounds'
+  /// diagonal.
+  double tolerance = 0.0;
+};
 
 struct MotionCheck {
   bool valid = false;  ///< every configuration of the motion is valid
@@ -29,23 +58,27 @@ struct MotionCheck {
 
 class MotionValidator {
  public:
-  MotionValidator(const SE3Space& space, CollisionChecker& checker)
-      : space_(space), checker_(checker) {}
+  MotionValidator(const SE3Space& space, CollisionChecker& checker,
+                  const ValidationSettings& settings = {});
 
   const SE3Space& space() const { return space_; }
   CollisionChecker& checker() { return checker_; }
 
-  /// Inside the bounds and collision-free.
+  /// Sets the way motions are checked (a planner sets its own settings' way when constructed).
+  void configure(const ValidationSettings& settings);
+  MotionValidation mode() const { return mode_; }
+  /// The contact tolerance in scene units (exact mode).
+  double tolerance() const { return tolerance_; }
+
+  /// Inside the bounds and collision-free; in exact mode also at least the tolerance from every
+  /// obstacle.
   bool is_valid(const Config& q) {
-    ++checks_;
-    if (!space_.satisfies_bounds(q))
+    if (!space_.satisfies_bounds(q)) {
+      ++checks_;
       return false;
-    if (!profiling_)
-      return checker_.is_collision_free(q);
-    const Stopwatch watch;
-    const bool free = checker_.is_collision_free(q);
-    check_seconds_ += watch.seconds();
-    return free;
+    }
+    return mode_ == MotionValidation::exact ? clearance(q, tolerance_) >= tolerance_
+                                            : collision_free(q);
   }
 
   /// Measures the time spent in collision queries (two clock reads per query; off by default).
@@ -54,26 +87,48 @@ class MotionValidator {
   /// Seconds spent in collision queries while profiling.
   double check_seconds() const { return check_seconds_; }
 
-  /// Whether the motion a -> b is valid, assuming a is. Checks b first, then the intermediate
-  /// configurations by bisection (midpoint first), which finds a collision sooner on average than a
-  /// sweep; the same order as OMPL's DiscreteMotionValidator.
-  bool check_motion(const Config& a, const Config& b);
+  /// Whether the motion a -> b is valid, assuming a is. Checks b first, then the rest by bisection
+  /// (midpoint first), which finds a collision sooner on average than a sweep; the same order as
+  /// OMPL's DiscreteMotionValidator.
+  bool check_motion(const Config& a, const Config& b) {
+    return mode_ == MotionValidation::exact ? check_motion_exact(a, b)
+                                            : check_motion_discrete(a, b);
+  }
 
   /// Sweeps from a toward b and reports the last valid configuration (the papers' Add_Tree
-  /// extension), assuming a is valid.
-  MotionCheck check_motion_last_valid(const Config& a, const Config& b);
+  /// extension), assuming a is valid. In exact mode the sweep advances by certified stretches and
+  /// the last valid configuration is the last one whose clearance bound reached the tolerance;
+  /// last_valid_step counts the discrete steps (of segment_count) it lies beyond a, so that a
+  /// blocked extension adds a node only if it got at least one step away, in both modes.
+  MotionCheck check_motion_last_valid(const Config& a, const Config& b) {
+    return mode_ == MotionValidation::exact ? last_valid_exact(a, b) : last_valid_discrete(a, b);
+  }
 
-  /// Number of configuration checks so far (each is one bounds test plus one collision query).
+  /// Number of configuration checks so far (each is one bounds test plus one collision query, or
+  /// in exact mode one clearance bound).
   std::uint64_t checks() const { return checks_; }
 
  private:
+  bool collision_free(const Config& q);
+  /// checker_.clearance_bound(q, cap), counted and timed.
+  double clearance(const Config& q, double cap);
+  /// L: no point of the object moves more than L |s - s'| between fractions s and s' of a -> b.
+  double displacement_rate(const Config& a, const Config& b) const;
+  bool check_motion_discrete(const Config& a, const Config& b);
+  bool check_motion_exact(const Config& a, const Config& b);
+  MotionCheck last_valid_discrete(const Config& a, const Config& b);
+  MotionCheck last_valid_exact(const Config& a, const Config& b);
+
   const SE3Space& space_;
   CollisionChecker& checker_;
+  MotionValidation mode_ = MotionValidation::discrete;
+  double tolerance_ = 0.0;
   std::uint64_t checks_ = 0;
   bool profiling_ = false;
   double check_seconds_ = 0.0;
-  std::vector<std::pair<unsigned, unsigned>>
-      queue_;  // reused by check_motion, no allocation per call
+  // Reused by check_motion, no allocation per call.
+  std::vector<std::pair<unsigned, unsigned>> queue_;
+  std::vector<std::pair<double, double>> stretches_;
 };
 
 }  // namespace tandem

@@ -45,6 +45,23 @@ ParamTable<S> make_table() {
        .help = "The trees' nearest-neighbour index: a k-d tree, or a linear scan"},
       &S::nearest_neighbors, [](const std::string& n) { return n; },
       [](const std::string& n) { return std::optional<std::string>(n); }));
+  t.push_back(choice_param<S>(
+      {.name = "validation",
+       .label = "motion validation",
+       .choices = {"exact", "discrete"},
+       .help = "How motions are checked: exact (the whole continuous motion, certified by "
+               "clearance bounds) or discrete (every 1% of the bounds' diagonal and of pi, "
+               "OMPL's DiscreteMotionValidator; may step over thin obstacles)"},
+      &S::validation, [](MotionValidation v) { return to_string(v); }, parse_motion_validation));
+  t.push_back(real_param<S>(
+      {.name = "tolerance",
+       .label = "contact tolerance",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Exact validation: closer than this to an obstacle counts as contact (0: 1e-5 x "
+               "the bounds' diagonal)"},
+      &S::tolerance));
   return t;
 }
 

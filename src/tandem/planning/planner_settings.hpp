@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/parameter.hpp"
 #include "tandem/interaction/interaction_settings.hpp"
 
@@ -35,6 +36,11 @@ struct PlannerSettings {
   ExtendMode extend = ExtendMode::classic;
   /// "kdtree" or "linear".
   std::string nearest_neighbors = "kdtree";
+  /// How motions are checked: the whole continuous motion (exact) or every 1% (discrete, OMPL's).
+  MotionValidation validation = MotionValidation::discrete;
+  /// Closer than this to an obstacle counts as contact (exact validation); 0: 1e-5 x the bounds'
+  /// diagonal.
+  double tolerance = 0.0;
   /// Measure the time spent in collision checks and nearest-neighbour queries.
   bool profile = false;
   /// The interactive planners' tunables (interaction_parameters()).
@@ -42,7 +48,7 @@ struct PlannerSettings {
 };
 
 /// The declarations of PlannerSettings' tunable fields (range, goal_bias, extend,
-/// nearest_neighbors); the seed is the run's, not a tunable.
+/// nearest_neighbors, validation, tolerance); the seed is the run's, not a tunable.
 const ParamTable<PlannerSettings>& planner_parameters();
 
 }  // namespace tandem

@@ -1,0 +1,203 @@
+// Exact (continuous) motion validation: clearance bounds held against FCL's own collision and
+// distance answers, a thin wall that the discrete check steps over, and random motions on every
+// shipped problem that the exact check never accepts where a 100x finer discrete check finds a
+// collision.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/test_support.hpp"
+#include "tandem/collision/collision_checker.hpp"
+#include "tandem/collision/motion_validator.hpp"
+#include "tandem/core/error.hpp"
+#include "tandem/core/rng.hpp"
+#include "tandem/scene/problem_loader.hpp"
+
+namespace tandem {
+namespace {
+
+using test::at;
+
+constexpr ValidationSettings kExact{MotionValidation::exact, 0.0};
+
+/// A 0.2 m cube and a 2 cm wall at x = 0 in a room so large that one discrete step (1% of its
+/// diagonal) is 1.4 m: the discrete check of a 1.2 m motion looks at its end only.
+Problem thin_wall_problem() {
+  Scene scene;
+  scene.object.name = "cube";
+  scene.object.parts.push_back({Box{{0.2, 0.2, 0.2}}, Eigen::Isometry3d::Identity()});
+  scene.obstacles.push_back(test::box_body("wall", {0.02, 100.0, 10.0}, {0.0, 0.0, 0.0}));
+  Bounds bounds{{-50, -50, -5}, {50, 50, 5}};
+  return Problem{"thin-wall", "test", std::move(scene), SE3Space(SpaceKind::se3, bounds),
+                 at(-0.6, 0), at(0.6, 0), {}, {}};
+}
+
+TEST(ExactMotion, CatchesTheThinWallTheDiscreteCheckStepsOver) {
+  const Problem p = thin_wall_problem();
+  CollisionChecker checker(p.scene);
+  MotionValidator discrete(p.space, checker);
+  MotionValidator exact(p.space, checker, kExact);
+  ASSERT_EQ(p.space.segment_count(p.start, p.goal), 1u);
+  EXPECT_TRUE(discrete.check_motion(p.start, p.goal));
+  EXPECT_FALSE(exact.check_motion(p.start, p.goal));
+  EXPECT_FALSE(exact.check_motion(p.goal, p.start));
+  // With the wall moved out of the way the same motion is certified, with a few queries.
+  Problem open = thin_wall_problem();
+  open.scene.obstacles[0] = test::box_body("wall", {0.02, 1.0, 1.0}, {0.0, 0.0, -3.0});
+  CollisionChecker open_checker(open.scene);
+  MotionValidator open_exact(open.space, open_checker, kExact);
+  EXPECT_TRUE(open_exact.check_motion(open.start, open.goal));
+  EXPECT_LE(open_exact.checks(), 3u);
+}
+
+TEST(ExactMotion, TurningIsBoundedByTheObjectsRadius) {
+  // A 1 m bar turning a quarter turn about z beside a post 0.45 m from its centre: every turn
+  // sweeps the post, whatever the discrete steps see.
+  Scene scene;
+  scene.object.name = "bar";
+  scene.object.parts.push_back({Box{{1.0, 0.05, 0.05}}, Eigen::Isometry3d::Identity()});
+  scene.obstacles.push_back(test::box_body("post", {0.01, 0.01, 1.0}, {0.32, 0.32, 0.0}));
+  const Problem p{"post", "test", std::move(scene),
+                  SE3Space(SpaceKind::se3, Bounds{{-2, -2, -1}, {2, 2, 1}}), at(0, 0), at(0, 0),
+                  {}, {}};
+  CollisionChecker checker(p.scene);
+  EXPECT_NEAR(checker.object_radius(), std::sqrt(0.25 + 2 * 0.025 * 0.025), 1e-12);
+  MotionValidator exact(p.space, checker, kExact);
+  const Config start = at(0, 0, 0, 0.0), quarter = at(0, 0, 0, 1.5707963267948966);
+  EXPECT_TRUE(exact.is_valid(start));
+  EXPECT_TRUE(exact.is_valid(quarter));
+  EXPECT_FALSE(exact.check_motion(start, quarter));
+  const MotionCheck last = exact.check_motion_last_valid(start, quarter);
+  EXPECT_FALSE(last.valid);
+  EXPECT_TRUE(exact.check_motion(start, last.last_valid));
+}
+
+TEST(ExactMotion, ContactCloserThanTheToleranceIsInvalid) {
+  const Problem p = thin_wall_problem();
+  CollisionChecker checker(p.scene);
+  MotionValidator exact(p.space, checker, {MotionValidation::exact, 0.01});
+  // The cube's face at x + 0.1, the wall's at -0.01. The bound may be short of the distance by
+  // the factor 1 + kClearanceRelativeError, so 1.3 cm away is surely valid, 0.5 cm surely not.
+  EXPECT_TRUE(exact.is_valid(at(-0.11 - 0.013, 0)));
+  EXPECT_FALSE(exact.is_valid(at(-0.11 - 0.005, 0)));
+  EXPECT_FALSE(exact.is_valid(at(0, 0)));
+  const ValidationSettings nan_tolerance{MotionValidation::exact, std::nan("")};
+  EXPECT_THROW(exact.configure(nan_tolerance), InputError);
+}
+
+/// The problems tandem ships (built-in scenes) and those of ../shared it reads (OMPL.app).
+std::vector<std::string> shipped_problems() {
+  std::vector<std::string> names = {"cluttered-1", "cluttered-2", "maze", "labyrinth-2d"};
+  const auto root = test::shared_dir() / "benchmarks" / "omplapp";
+  if (!std::filesystem::exists(root))
+    return names;
+  for (const char* dim : {"3D", "2D"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(root / dim)) {
+      if (entry.path().extension() == ".cfg")
+        names.push_back(entry.path().string());
+    }
+  }
+  return names;
+}
+
+TEST(ExactMotion, ClearanceBoundsNeverExceedFclsDistanceOnEveryShippedProblem) {
+  for (const std::string& name : shipped_problems()) {
+    SCOPED_TRACE(name);
+    const Problem p = load_problem(name);
+    CollisionChecker checker(p.scene);
+    Rng rng(7);
+    int colliding = 0, free = 0;
+    for (int i = 0; i < 200; ++i) {
+      const Config q = p.space.sample_uniform(rng);
+      const NearestObstacle exact = checker.nearest_obstacle(q);
+      const double cap = rng.uniform(0.0, 0.2) * p.space.translation_extent();
+      const double bound = checker.clearance_bound(q, cap);
+      EXPECT_LE(bound, cap);
+      if (!checker.is_collision_free(q)) {
+        ++colliding;
+        EXPECT_LE(bound, 0.0);
+        continue;
+      }
+      ++free;
+      EXPECT_LE(bound, exact.distance + 1e-9 * p.space.translation_extent());
+      // And it is no looser than FCL's relative error allows.
+      const double grow = 1.0 + CollisionChecker::kClearanceRelativeError;
+      EXPECT_GE(bound, std::min(cap, exact.distance / grow) - 1e-9 * p.space.translation_extent());
+    }
+    EXPECT_GT(free, 0);
+    (void)colliding;
+  }
+}
+
+/// Whether the motion collides at any of n equal steps (FCL's yes/no answer).
+bool collides_finely(const SE3Space& space, CollisionChecker& checker, const Config& a,
+                     const Config& b, unsigned n) {
+  for (unsigned k = 0; k <= n; ++k) {
+    if (!checker.is_collision_free(space.interpolate(a, b, static_cast<double>(k) / n)))
+      return true;
+  }
+  return false;
+}
+
+TEST(ExactMotion, NeverAcceptsAMotionThatAHundredTimesFinerDiscreteCheckRejects) {
+  for (const std::string& name : shipped_problems()) {
+    SCOPED_TRACE(name);
+    const Problem p = load_problem(name);
+    CollisionChecker checker(p.scene);
+    MotionValidator exact(p.space, checker, kExact);
+    MotionValidator discrete(p.space, checker);
+    Rng rng(11);
+    int accepted = 0, discrete_only = 0, tried = 0;
+    for (int attempts = 0; tried < 300 && attempts < 20000; ++attempts) {
+      const Config a = p.space.sample_uniform(rng);
+      if (!exact.is_valid(a))
+        continue;
+      // A motion of up to a tenth of the space's extent, half of them longer than a step.
+      Config b = p.space.interpolate(a, p.space.sample_uniform(rng), rng.uniform(0.0, 0.1));
+      ++tried;
+      const bool ok = exact.check_motion(a, b);
+      const unsigned n = std::max(1u, p.space.segment_count(a, b)) * 100;
+      if (ok) {
+        ++accepted;
+        EXPECT_FALSE(collides_finely(p.space, checker, a, b, n));
+        EXPECT_TRUE(exact.check_motion(b, a));
+      } else if (discrete.check_motion(a, b)) {
+        ++discrete_only;
+      }
+    }
+    EXPECT_EQ(tried, 300);
+    EXPECT_GT(accepted, 30) << "too few motions accepted for the test to mean something";
+    RecordProperty(name + ": discrete accepts, exact refuses", discrete_only);
+  }
+}
+
+TEST(ExactMotion, TheLastValidConfigurationIsReachedByAValidMotion) {
+  for (const char* name : {"cluttered-1", "maze"}) {
+    SCOPED_TRACE(name);
+    const Problem p = load_problem(name);
+    CollisionChecker checker(p.scene);
+    MotionValidator exact(p.space, checker, kExact);
+    Rng rng(3);
+    int stopped = 0;
+    for (int i = 0; i < 300; ++i) {
+      const Config a = p.space.sample_uniform(rng);
+      if (!exact.is_valid(a))
+        continue;
+      const Config b = p.space.sample_uniform(rng);
+      const MotionCheck r = exact.check_motion_last_valid(a, b);
+      EXPECT_TRUE(exact.is_valid(r.last_valid));
+      if (r.valid)
+        continue;
+      if (r.last_valid_step > 0) {
+        ++stopped;
+        EXPECT_TRUE(exact.check_motion(a, r.last_valid));
+      }
+    }
+    EXPECT_GT(stopped, 5);
+  }
+}
+
+}  // namespace
+}  // namespace tandem
