@@ -11,6 +11,8 @@
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/io/path_file.hpp"
+#include "tandem/planning/path.hpp"
+#include "tandem/planning/planner_registry.hpp"
 
 namespace tandem {
 namespace {
@@ -107,6 +109,36 @@ std::string error_of(const std::filesystem::path& cfg) {
   }
   ADD_FAILURE() << "accepted " << cfg;
   return {};
+}
+
+TEST(OmplAppProblem, ReadsPlannerSectionsThatNameAPlannerTwiceAndPlansTheirProblem) {
+  TANDEM_REQUIRE_SHARED_DATA();
+  // As OMPL's own benchmark files compare two settings of one planner: each repetition starts a
+  // new planner entry; tandem takes the first entry's settings.
+  TempDir dir;
+  const std::string easy = "start.x = 270.0\nstart.y = 160.0\nstart.z = -200.0\n"
+                           "start.theta = 0\nstart.axis.x = 1\nstart.axis.y = 0\nstart.axis.z = 0\n"
+                           "goal.x = 270.0\ngoal.y = 160.0\ngoal.z = -400.0\ngoal.theta = 0\n"
+                           "goal.axis.x = 1\ngoal.axis.y = 0\ngoal.axis.z = 0\n";
+  const auto cfg = write_cfg(dir, easy +
+                                      "[planner]\naps=\naps.name=APS1\naps.range=5\n"
+                                      "rrtconnect=\nrrtconnect.range=30\n"
+                                      "aps=\naps.name=APS4\naps.range=9\n"
+                                      "rrtconnect=\nrrtconnect.range=60\n");
+  const Problem p = load_ompl_app_problem(cfg);
+  EXPECT_DOUBLE_EQ(p.hints.range.at("birrt"), 30.0);
+  CollisionChecker checker(p.scene);
+  MotionValidator validator(p.space, checker);
+  PlannerSettings settings;
+  settings.range = p.hints.range.at("birrt");
+  auto planner = make_planner("birrt", validator, p.start, p.goal, settings);
+  Termination t;
+  t.time_limit_s = 60.0;
+  ASSERT_EQ(planner->solve(t), PlannerStatus::solved);
+  EXPECT_TRUE(check_path(planner->solution(), validator).valid);
+  // Elsewhere a repeated key is still a mistake.
+  EXPECT_THAT(error_of(write_cfg(dir, easy + "start.x = 1\n")),
+              HasSubstr("key 'start.x' repeated (first on line 4)"));
 }
 
 TEST(OmplAppProblem, ReportsMalformedFiles) {
