@@ -13,7 +13,7 @@ namespace {
 struct CheckArgs {
   ProblemArgs problem;
   std::string path_file;
-  std::string validation = "exact";
+  std::string validation = "discrete";
   double tolerance = 0.0;
 };
 
@@ -61,8 +61,8 @@ Command add_check_path_command(CLI::App& app) {
       ->capture_default_str();
   app.footer(
       "Checks every state (bounds, collision) and every motion between consecutive states: the "
-      "whole continuous motion (exact, the default) or the states at the problem's resolution "
-      "(discrete).\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
+      "states at the problem's resolution (discrete, the default) or the whole continuous motion "
+      "(exact).\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
       "input.");
   return [args] { return run_check(*args); };
 }

@@ -30,8 +30,14 @@ Problem thin_wall_problem() {
   scene.object.parts.push_back({Box{{0.2, 0.2, 0.2}}, Eigen::Isometry3d::Identity()});
   scene.obstacles.push_back(test::box_body("wall", {0.02, 100.0, 10.0}, {0.0, 0.0, 0.0}));
   Bounds bounds{{-50, -50, -5}, {50, 50, 5}};
-  return Problem{"thin-wall", "test", std::move(scene), SE3Space(SpaceKind::se3, bounds),
-                 at(-0.6, 0), at(0.6, 0), {}, {}};
+  return Problem{"thin-wall",
+                 "test",
+                 std::move(scene),
+                 SE3Space(SpaceKind::se3, bounds),
+                 at(-0.6, 0),
+                 at(0.6, 0),
+                 {},
+                 {}};
 }
 
 TEST(ExactMotion, CatchesTheThinWallTheDiscreteCheckStepsOver) {
@@ -59,9 +65,14 @@ TEST(ExactMotion, TurningIsBoundedByTheObjectsRadius) {
   scene.object.name = "bar";
   scene.object.parts.push_back({Box{{1.0, 0.05, 0.05}}, Eigen::Isometry3d::Identity()});
   scene.obstacles.push_back(test::box_body("post", {0.01, 0.01, 1.0}, {0.32, 0.32, 0.0}));
-  const Problem p{"post", "test", std::move(scene),
-                  SE3Space(SpaceKind::se3, Bounds{{-2, -2, -1}, {2, 2, 1}}), at(0, 0), at(0, 0),
-                  {}, {}};
+  const Problem p{"post",
+                  "test",
+                  std::move(scene),
+                  SE3Space(SpaceKind::se3, Bounds{{-2, -2, -1}, {2, 2, 1}}),
+                  at(0, 0),
+                  at(0, 0),
+                  {},
+                  {}};
   CollisionChecker checker(p.scene);
   EXPECT_NEAR(checker.object_radius(), std::sqrt(0.25 + 2 * 0.025 * 0.025), 1e-12);
   MotionValidator exact(p.space, checker, kExact);

@@ -116,10 +116,11 @@ TEST(OmplAppProblem, ReadsPlannerSectionsThatNameAPlannerTwiceAndPlansTheirProbl
   // As OMPL's own benchmark files compare two settings of one planner: each repetition starts a
   // new planner entry; tandem takes the first entry's settings.
   TempDir dir;
-  const std::string easy = "start.x = 270.0\nstart.y = 160.0\nstart.z = -200.0\n"
-                           "start.theta = 0\nstart.axis.x = 1\nstart.axis.y = 0\nstart.axis.z = 0\n"
-                           "goal.x = 270.0\ngoal.y = 160.0\ngoal.z = -400.0\ngoal.theta = 0\n"
-                           "goal.axis.x = 1\ngoal.axis.y = 0\ngoal.axis.z = 0\n";
+  const std::string easy =
+      "start.x = 270.0\nstart.y = 160.0\nstart.z = -200.0\n"
+      "start.theta = 0\nstart.axis.x = 1\nstart.axis.y = 0\nstart.axis.z = 0\n"
+      "goal.x = 270.0\ngoal.y = 160.0\ngoal.z = -400.0\ngoal.theta = 0\n"
+      "goal.axis.x = 1\ngoal.axis.y = 0\ngoal.axis.z = 0\n";
   const auto cfg = write_cfg(dir, easy +
                                       "[planner]\naps=\naps.name=APS1\naps.range=5\n"
                                       "rrtconnect=\nrrtconnect.range=30\n"

@@ -22,8 +22,8 @@
 namespace tandem {
 
 struct CollisionCounters {
-  std::uint64_t state_checks = 0;      ///< is_collision_free() calls
-  std::uint64_t distance_queries = 0;  ///< nearest_obstacle() calls
+  std::uint64_t state_checks = 0;       ///< is_collision_free() calls
+  std::uint64_t distance_queries = 0;   ///< nearest_obstacle() calls
   std::uint64_t clearance_queries = 0;  ///< clearance_bound() calls
   std::uint64_t fcl_errors =
       0;  ///< exceptions thrown by FCL and caught here (counted as collision)

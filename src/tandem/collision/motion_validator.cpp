@@ -46,8 +46,7 @@ void MotionValidator::configure(const ValidationSettings& settings) {
   if (!(settings.tolerance >= 0.0) || !std::isfinite(settings.tolerance))
     throw InputError("tolerance", "must be a finite number >= 0");
   mode_ = settings.mode;
-  tolerance_ =
-      settings.tolerance > 0.0 ? settings.tolerance : 1e-5 * space_.translation_extent();
+  tolerance_ = settings.tolerance > 0.0 ? settings.tolerance : 1e-5 * space_.translation_extent();
 }
 
 bool MotionValidator::collision_free(const Config& q) {
