@@ -17,6 +17,8 @@ constexpr double kStretchShare = 0.999;
 /// Head-room on L for the rounding of interpolate() (slerp turns at a constant rate only up to it).
 constexpr double kRateMargin = 1e-9;
 
+/// The largest clearance asked of FCL, in translation steps.
+constexpr double kCapSteps = 1.0;
 /// The clearance, in translation steps, at which a last-valid sweep stops in front of an obstacle.
 constexpr double kStopSteps = 0.1;
 
@@ -60,11 +62,15 @@ bool MotionValidator::collision_free(const Config& q) {
 }
 
 double MotionValidator::clearance(const Config& q, double cap) {
+  // FCL's work grows with the cap (every pair of bounding volumes closer than it is opened): a
+  // cap of one resolution step costs less over a motion than certifying it in fewer, larger
+  // stretches (Easy: 2.5 times less planning time than no limit; 0.25 and 4 steps both slower).
+  cap = std::max(std::min(cap, kCapSteps * space_.translation_step()), tolerance_);
   ++checks_;
   if (!profiling_)
-    return checker_.clearance_bound(q, std::max(cap, tolerance_));
+    return checker_.clearance_bound(q, cap);
   const Stopwatch watch;
-  const double c = checker_.clearance_bound(q, std::max(cap, tolerance_));
+  const double c = checker_.clearance_bound(q, cap);
   check_seconds_ += watch.seconds();
   return c;
 }
