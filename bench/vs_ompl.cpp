@@ -340,6 +340,8 @@ int run_benchmark(const Options& o) {
     ProblemBench problem(names[i], cfgs[i], o);
     const bench::ProblemReport report = problem.run(lines.is_open() ? &lines : nullptr);
     bench::print_report(stdout, report);
+    if (o.threads > 1)
+      std::printf("  (tandem-birrt records --threads but does not use it yet: one thread)\n");
     if (o.profile)
       print_profile(problem.tandem_runs());
     if (markdown.is_open())
