@@ -1,21 +1,19 @@
-// tandem's BiRRT against OMPL 1.5's RRTConnect, side by side on OMPL.app's problems.
+// tandem's BiRRT against OMPL 1.5's planners, side by side on OMPL.app's problems.
 //
-// Fairness: both planners get the same problem (loaded once by tandem's OMPL.app loader), the same
-// collision checker (tandem's FCL wrapper: OMPL's StateValidityChecker calls it), the same bounds
-// test, the same motion resolution (OMPL's longestValidSegmentFraction = the problem's resolution)
-// and the same range. Runs alternate between the planners (and which goes first), each with the
-// same time limit, on one thread. OMPL keeps its own defaults otherwise (GNAT nearest neighbours,
-// DiscreteMotionValidator).
+// OMPL is measured as OMPL.app's users run it (ompl_app_setup.hpp): OMPL.app's FCL collision
+// model and validity checker, built here from OMPL and FCL directly, OMPL's space, metric,
+// DiscreteMotionValidator, projections and planner defaults (the range only where the problem's
+// [planner] section gives one). tandem runs with its own collision checker and motion validator.
+// Both get the same meshes, start, goal, bounds and motion resolution (tandem's OMPL.app loader),
+// and the same time limit. Run i runs every planner once, in an order rotated by i.
 //
-// Output: a table per problem (success rates, median times with unsolved runs counted at the time
-// limit, median collision checks, median time ratio tandem/OMPL), and one JSON line per run.
+// Every solved tandem path is re-checked by OMPL (PathGeometric::check() at OMPL.app's
+// resolution) and by tandem's check_path.
+//
+// Output: a table per problem (solved runs, median and p90 times with unsolved runs counted at the
+// limit, median validity checks and nodes, the ratios of tandem's median time to RRTConnect's and
+// to the best OMPL planner's), optionally the same as a Markdown table and one JSON line per run.
 
-#include <ompl/base/ScopedState.h>
-#include <ompl/base/spaces/SE2StateSpace.h>
-#include <ompl/base/spaces/SE3StateSpace.h>
-#include <ompl/geometric/PathGeometric.h>
-#include <ompl/geometric/SimpleSetup.h>
-#include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -23,11 +21,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "bench_report.hpp"
+#include "ompl_app_setup.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/planning/path.hpp"
@@ -35,281 +38,335 @@
 #include "tandem/planning/planner_registry.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 
-namespace ob = ompl::base;
-namespace og = ompl::geometric;
+namespace fs = std::filesystem;
+using bench::RunResult;
 
 namespace {
 
-using tandem::Config;
-
-struct RunResult {
-  std::string planner;
-  bool solved = false;
-  double time_s = 0.0;
-  std::uint64_t checks = 0;
-  std::size_t nodes = 0;
-  double path_length = 0.0;
-  double collision_time_s = 0.0;
-  double nearest_time_s = 0.0;
+struct Options {
+  std::string shared = "../shared";
+  std::vector<std::string> problems;  ///< empty: every problem of the shared folder
+  std::vector<std::string> planners = {"rrtconnect"};
+  int runs = 20;
+  double time_limit = 30.0;
+  double hard_time_limit = 60.0;
+  std::uint64_t seed = 1;
+  unsigned threads = 1;
+  std::string jsonl;
+  std::string markdown;
+  bool profile = false;
+  std::string extend = "classic";
 };
 
-Config from_ompl(const ob::State* state, const tandem::SE3Space& space) {
-  if (space.planar()) {
-    const auto* s = state->as<ob::SE2StateSpace::StateType>();
-    return space.planar_config(s->getX(), s->getY(), s->getYaw());
-  }
-  const auto* s = state->as<ob::SE3StateSpace::StateType>();
-  Config q;
-  q.t = {s->getX(), s->getY(), s->getZ()};
-  const auto& r = s->rotation();
-  q.q = Eigen::Quaterniond(r.w, r.x, r.y, r.z);
-  return q;
+/// The problems that get --hard-time-limit.
+bool is_hard(const std::string& name) {
+  return name == "bugtrap" || name == "alpha-1.2";
 }
 
-void to_ompl(const Config& q, ob::State* state, const tandem::SE3Space& space) {
-  if (space.planar()) {
-    auto* s = state->as<ob::SE2StateSpace::StateType>();
-    s->setXY(q.t.x(), q.t.y());
-    s->setYaw(tandem::SE3Space::yaw(q.q));
-    return;
-  }
-  auto* s = state->as<ob::SE3StateSpace::StateType>();
-  s->setXYZ(q.t.x(), q.t.y(), q.t.z());
-  s->rotation().x = q.q.x();
-  s->rotation().y = q.q.y();
-  s->rotation().z = q.q.z();
-  s->rotation().w = q.q.w();
+fs::path omplapp_dir(const Options& o) {
+  return fs::path(o.shared) / "benchmarks" / "omplapp";
 }
 
-/// OMPL's side: a SimpleSetup over the same space, validated by tandem's MotionValidator::is_valid.
-class OmplSide {
- public:
-  OmplSide(const tandem::Problem& problem, tandem::MotionValidator& validator, double range)
-      : problem_(problem), validator_(validator) {
-    const auto& b = problem.space.bounds();
-    ob::StateSpacePtr space;
-    if (problem.space.planar()) {
-      auto se2 = std::make_shared<ob::SE2StateSpace>();
-      ob::RealVectorBounds bounds(2);
-      for (int i = 0; i < 2; ++i) {
-        bounds.setLow(static_cast<unsigned>(i), b.min[i]);
-        bounds.setHigh(static_cast<unsigned>(i), b.max[i]);
-      }
-      se2->setBounds(bounds);
-      space = se2;
-    } else {
-      auto se3 = std::make_shared<ob::SE3StateSpace>();
-      ob::RealVectorBounds bounds(3);
-      for (int i = 0; i < 3; ++i) {
-        bounds.setLow(static_cast<unsigned>(i), b.min[i]);
-        bounds.setHigh(static_cast<unsigned>(i), b.max[i]);
-      }
-      se3->setBounds(bounds);
-      space = se3;
-    }
-    setup_ = std::make_unique<og::SimpleSetup>(space);
-    const tandem::SE3Space* tspace = &problem_.space;
-    setup_->setStateValidityChecker(
-        [this, tspace](const ob::State* s) { return validator_.is_valid(from_ompl(s, *tspace)); });
-    setup_->getSpaceInformation()->setStateValidityCheckingResolution(problem.space.resolution());
-    ob::ScopedState<> start(space), goal(space);
-    to_ompl(problem.start, start.get(), problem.space);
-    to_ompl(problem.goal, goal.get(), problem.space);
-    setup_->setStartAndGoalStates(start, goal);
-    auto planner = std::make_shared<og::RRTConnect>(setup_->getSpaceInformation());
-    planner->setRange(range);
-    setup_->setPlanner(planner);
-    setup_->setup();
-    range_ = planner->getRange();
-    max_extent_ = space->getMaximumExtent();
+/// 3D/NAME.cfg or else 2D/NAME.cfg.
+fs::path resolve_problem(const fs::path& dir, const std::string& name) {
+  for (const char* sub : {"3D", "2D"}) {
+    const fs::path cfg = dir / sub / (name + ".cfg");
+    if (fs::is_regular_file(cfg))
+      return cfg;
   }
+  throw tandem::InputError("--problems", "unknown problem '" + name + "' (no 3D/" + name +
+                                             ".cfg or 2D/" + name + ".cfg in " + dir.string() +
+                                             ")");
+}
 
-  double range() const { return range_; }
-  double max_extent() const { return max_extent_; }
-
-  RunResult run(double time_limit) {
-    setup_->clear();
-    const std::uint64_t before = validator_.checks();
-    RunResult r;
-    r.planner = "ompl-rrtconnect";
-    const tandem::Stopwatch watch;
-    const ob::PlannerStatus status =
-        setup_->getPlanner()->solve(ob::timedPlannerTerminationCondition(time_limit));
-    r.time_s = watch.seconds();
-    r.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
-    r.checks = validator_.checks() - before;
-    ob::PlannerData data(setup_->getSpaceInformation());
-    setup_->getPlanner()->getPlannerData(data);
-    r.nodes = data.numVertices();
-    if (r.solved) {
-      tandem::Path path;
-      for (const ob::State* s : setup_->getProblemDefinition()
-                                    ->getSolutionPath()
-                                    ->as<og::PathGeometric>()
-                                    ->getStates()) {
-        path.push_back(from_ompl(s, problem_.space));
+/// Every .cfg of 3D/ then 2D/: the known ones from the easiest, then the others by name.
+std::vector<std::string> default_problems(const fs::path& dir) {
+  static const std::vector<std::string> kOrder = {"Easy",      "cubicles",    "Twistycool",
+                                                  "alpha-1.5", "Apartment",   "bugtrap",
+                                                  "alpha-1.2", "Maze_planar", "BugTrap_planar"};
+  std::vector<std::string> names;
+  for (const char* sub : {"3D", "2D"}) {
+    std::vector<std::string> found;
+    if (fs::is_directory(dir / sub)) {
+      for (const auto& entry : fs::directory_iterator(dir / sub)) {
+        if (entry.path().extension() == ".cfg")
+          found.push_back(entry.path().stem().string());
       }
-      r.path_length = tandem::path_length(problem_.space, path);
     }
-    return r;
+    auto rank = [](const std::string& n) {
+      return std::find(kOrder.begin(), kOrder.end(), n) - kOrder.begin();
+    };
+    std::sort(found.begin(), found.end(), [&](const std::string& a, const std::string& b) {
+      return rank(a) != rank(b) ? rank(a) < rank(b) : a < b;
+    });
+    names.insert(names.end(), found.begin(), found.end());
   }
+  if (names.empty())
+    throw tandem::InputError("--shared", "no OMPL.app problems in " + dir.string());
+  return names;
+}
 
- private:
-  const tandem::Problem& problem_;
-  tandem::MotionValidator& validator_;
-  std::unique_ptr<og::SimpleSetup> setup_;
-  double range_ = 0.0;
-  double max_extent_ = 0.0;
+void check_planners(const std::vector<std::string>& planners) {
+  const auto& known = bench::ompl_planner_names();
+  std::set<std::string> seen;
+  for (const std::string& p : planners) {
+    if (std::find(known.begin(), known.end(), p) == known.end()) {
+      std::string list;
+      for (const std::string& k : known)
+        list += (list.empty() ? "" : ", ") + k;
+      throw tandem::InputError("--planners", "unknown planner '" + p + "' (known: " + list + ")");
+    }
+    if (!seen.insert(p).second)
+      throw tandem::InputError("--planners", "planner '" + p + "' given twice");
+  }
+}
+
+struct TandemRun {
+  RunResult result;
+  tandem::Path path;
 };
 
-RunResult run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator,
+/// tandem's side: its BiRRT with its own collision checker and motion validator.
+TandemRun run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator,
                      double range, std::uint64_t seed, double time_limit, bool profile,
-                     tandem::ExtendMode extend) {
+                     tandem::ExtendMode extend, unsigned threads) {
   tandem::PlannerSettings settings;
   settings.extend = extend;
   settings.seed = seed;
   settings.range = range;
   settings.profile = profile;
+  // TODO(threads): settings.threads = threads;
   auto planner = tandem::make_planner("birrt", validator, problem.start, problem.goal, settings);
   tandem::Termination t;
   t.time_limit_s = time_limit;
   const tandem::Stopwatch watch;
   const tandem::PlannerStatus status = planner->solve(t);
-  RunResult r;
+  TandemRun run;
+  RunResult& r = run.result;
   r.planner = "tandem-birrt";
+  r.threads = threads;
+  r.range = planner->range();
   r.time_s = watch.seconds();
   r.solved = status == tandem::PlannerStatus::solved;
   r.checks = planner->stats().collision_checks;
   r.nodes = planner->stats().nodes;
   r.collision_time_s = planner->stats().collision_time_s;
   r.nearest_time_s = planner->stats().nearest_time_s;
-  if (r.solved)
-    r.path_length = tandem::path_length(problem.space, planner->solution());
-  return r;
+  if (r.solved) {
+    run.path = planner->solution();
+    r.path_length = tandem::path_length(problem.space, run.path);
+  }
+  return run;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty())
-    return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+void write_json_line(std::ostream& out, const std::string& problem, int run, std::uint64_t seed,
+                     double limit, const RunResult& r, const nlohmann::json& path_checks) {
+  nlohmann::json line{{"problem", problem},
+                      {"planner", r.planner},
+                      {"threads", r.threads},
+                      {"run", run},
+                      {"seed", seed},
+                      {"solved", r.solved},
+                      {"time_s", r.time_s},
+                      {"collision_checks", r.checks},
+                      {"nodes", r.nodes},
+                      {"range", r.range},
+                      {"path_length", r.path_length},
+                      {"time_limit_s", limit},
+                      {"collision_time_s", r.collision_time_s},
+                      {"nearest_time_s", r.nearest_time_s}};
+  if (!path_checks.is_null())
+    line["path_checks"] = path_checks;
+  out << line.dump() << '\n' << std::flush;
+}
+
+void check_same_extent(const bench::OmplAppProblem& ompl, const tandem::Problem& problem) {
+  const double theirs = ompl.space_information()->getMaximumExtent();
+  const double ours = problem.space.max_extent();
+  if (std::abs(theirs - ours) > 1e-9 * ours) {
+    throw std::logic_error("OMPL's maximum extent (" + std::to_string(theirs) +
+                           ") is not tandem's (" + std::to_string(ours) + ") for " + problem.name);
+  }
+}
+
+void print_profile(const std::vector<RunResult>& runs) {
+  double total = 0, coll = 0, nn = 0;
+  for (const RunResult& r : runs) {
+    total += r.time_s;
+    coll += r.collision_time_s;
+    nn += r.nearest_time_s;
+  }
+  std::printf(
+      "  tandem profile: collision checks %.1f%%, nearest neighbour %.1f%%, the rest %.1f%%\n",
+      100 * coll / total, 100 * nn / total, 100 * (total - coll - nn) / total);
+}
+
+/// One problem: every planner `runs` times, alternating; the runs go to `lines` as they end.
+class ProblemBench {
+ public:
+  ProblemBench(const std::string& name, const fs::path& cfg, const Options& o)
+      : name_(name),
+        o_(o),
+        problem_(tandem::load_ompl_app_problem(cfg)),
+        limit_(is_hard(name) ? o.hard_time_limit : o.time_limit),
+        checker_(problem_.scene),
+        validator_(problem_.space, checker_),
+        ompl_(problem_) {
+    check_same_extent(ompl_, problem_);
+    for (const std::string& p : o.planners) {
+      runners_.push_back(std::make_unique<bench::OmplPlannerRunner>(ompl_, p, o.threads,
+                                                                    bench::cfg_range(problem_, p)));
+    }
+  }
+
+  bench::ProblemReport run(std::ostream* lines) {
+    const std::size_t n = 1 + runners_.size();
+    for (int i = 0; i < o_.runs; ++i) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t who = (static_cast<std::size_t>(i) + k) % n;
+        if (who == 0)
+          run_tandem_once(i, lines);
+        else
+          record(i, o_.seed, runners_[who - 1]->run(limit_), nullptr, lines);
+      }
+    }
+    return report();
+  }
+
+  const std::vector<RunResult>& tandem_runs() { return results_["tandem-birrt"]; }
+
+ private:
+  void run_tandem_once(int i, std::ostream* lines) {
+    auto hint = problem_.hints.range.find("birrt");
+    const double range =
+        hint != problem_.hints.range.end() ? hint->second : problem_.space.default_range();
+    const std::uint64_t seed = o_.seed + static_cast<std::uint64_t>(i);
+    TandemRun t = run_tandem(
+        problem_, validator_, range, seed, limit_, o_.profile,
+        o_.extend == "last-valid" ? tandem::ExtendMode::last_valid : tandem::ExtendMode::classic,
+        o_.threads);
+    nlohmann::json checks;
+    if (t.result.solved) {
+      const bool ompl_ok = ompl_.check_path(t.path);
+      const bool tandem_ok = tandem::check_path(t.path, validator_).valid;
+      ++paths_.checked;
+      paths_.ompl_failures += ompl_ok ? 0 : 1;
+      paths_.tandem_failures += tandem_ok ? 0 : 1;
+      checks = {{"ompl", ompl_ok}, {"tandem", tandem_ok}};
+    }
+    record(i, seed, std::move(t.result), checks, lines);
+  }
+
+  void record(int i, std::uint64_t seed, RunResult r, const nlohmann::json& checks,
+              std::ostream* lines) {
+    if (lines != nullptr)
+      write_json_line(*lines, name_, i, seed, limit_, r, checks);
+    results_[r.planner].push_back(std::move(r));
+  }
+
+  bench::ProblemReport report() {
+    bench::ProblemReport rep;
+    rep.problem = name_;
+    rep.time_limit = limit_;
+    rep.runs = o_.runs;
+    rep.tandem = bench::summarize(results_["tandem-birrt"], limit_);
+    for (const auto& runner : runners_)
+      rep.ompl.push_back(bench::summarize(results_[runner->label()], limit_));
+    rep.paths = paths_;
+    return rep;
+  }
+
+  std::string name_;
+  const Options& o_;
+  tandem::Problem problem_;
+  double limit_;
+  tandem::CollisionChecker checker_;
+  tandem::MotionValidator validator_;
+  bench::OmplAppProblem ompl_;
+  std::vector<std::unique_ptr<bench::OmplPlannerRunner>> runners_;
+  std::map<std::string, std::vector<RunResult>> results_;
+  bench::PathChecks paths_;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("--shared", o.shared, "The shared folder holding benchmarks/omplapp");
+  app.add_option("--problems", o.problems,
+                 "OMPL.app problems (3D/NAME.cfg or 2D/NAME.cfg); default: all of them")
+      ->delimiter(',');
+  app.add_option("--planners", o.planners,
+                 "OMPL planners: rrtconnect, kpiece1, bkpiece1, lbkpiece1, biest, sbl, prrt, "
+                 "parallel-rrtconnect (tandem's birrt always runs)")
+      ->delimiter(',')
+      ->capture_default_str();
+  app.add_option("--runs", o.runs, "Runs per planner and problem")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--time-limit", o.time_limit, "Seconds per run")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--hard-time-limit", o.hard_time_limit, "Seconds per run on bugtrap, alpha-1.2")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--seed", o.seed, "tandem's run i uses seed + i; OMPL is seeded once with it")
+      ->capture_default_str();
+  app.add_option("--threads", o.threads, "Threads of prrt and parallel-rrtconnect")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--jsonl", o.jsonl, "Also write one JSON line per run here");
+  app.add_option("--markdown", o.markdown, "Also write the summary as a Markdown table here");
+  app.add_flag("--profile", o.profile,
+               "Time tandem's collision checks and nearest-neighbour queries");
+  app.add_option("--extend", o.extend, "tandem's extension: classic or last-valid")
+      ->check(CLI::IsMember({"classic", "last-valid"}))
+      ->capture_default_str();
+}
+
+int run_benchmark(const Options& o) {
+  const fs::path dir = omplapp_dir(o);
+  check_planners(o.planners);
+  const std::vector<std::string> names = o.problems.empty() ? default_problems(dir) : o.problems;
+  std::vector<fs::path> cfgs;
+  for (const std::string& name : names)
+    cfgs.push_back(resolve_problem(dir, name));
+
+  std::ofstream lines, markdown;
+  if (!o.jsonl.empty())
+    lines.open(o.jsonl);
+  if (!o.markdown.empty()) {
+    markdown.open(o.markdown);
+    bench::write_markdown_header(markdown);
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    ProblemBench problem(names[i], cfgs[i], o);
+    const bench::ProblemReport report = problem.run(lines.is_open() ? &lines : nullptr);
+    bench::print_report(stdout, report);
+    if (o.threads > 1)
+      std::printf("  (tandem-birrt records --threads but does not use it yet: one thread)\n");
+    if (o.profile)
+      print_profile(problem.tandem_runs());
+    if (markdown.is_open())
+      bench::write_markdown_row(markdown, report);
+  }
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"tandem's BiRRT against OMPL's RRTConnect on OMPL.app problems, runs alternating"};
-  std::string shared = "../shared";
-  std::vector<std::string> problems = {"Easy",      "cubicles", "Twistycool", "alpha-1.5",
-                                       "alpha-1.2", "bugtrap",  "Apartment"};
-  int runs = 20;
-  double time_limit = 60.0;
-  std::uint64_t seed = 1;
-  std::string jsonl;
-  bool profile = false;
-  std::string extend = "classic";
-  app.add_option("--shared", shared, "The shared folder holding benchmarks/omplapp");
-  app.add_option("--problems", problems, "OMPL.app 3D problem names")->delimiter(',');
-  app.add_option("--runs", runs, "Runs per planner and problem")->check(CLI::PositiveNumber);
-  app.add_option("--time-limit", time_limit, "Seconds per run (the problem's own limit if lower)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--seed", seed, "First seed; run i uses seed + i (OMPL is seeded once with it)");
-  app.add_option("--jsonl", jsonl, "Also write one JSON line per run here");
-  app.add_flag("--profile", profile,
-               "Time tandem's collision checks and nearest-neighbour queries");
-  app.add_option("--extend", extend, "tandem's extension: classic or last-valid")
-      ->check(CLI::IsMember({"classic", "last-valid"}));
+  CLI::App app{"tandem's BiRRT against OMPL's planners as OMPL.app runs them, runs alternating"};
+  Options o;
+  add_options(app, o);
   CLI11_PARSE(app, argc, argv);
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  ompl::RNG::setSeed(seed);
-  std::ofstream lines;
-  if (!jsonl.empty())
-    lines.open(jsonl);
-
-  std::printf("%-11s %5s %9s %9s %11s %11s %13s %13s %9s\n", "problem", "runs", "ok tandem",
-              "ok OMPL", "t tandem s", "t OMPL s", "checks tandem", "checks OMPL", "t ratio");
+  ompl::RNG::setSeed(o.seed);  // once, before OMPL makes its first generator
   try {
-    for (const std::string& name : problems) {
-      const auto cfg =
-          std::filesystem::path(shared) / "benchmarks" / "omplapp" / "3D" / (name + ".cfg");
-      const tandem::Problem problem = tandem::load_ompl_app_problem(cfg);
-      const double limit = std::min(time_limit, problem.hints.time_limit.value_or(time_limit));
-      tandem::CollisionChecker checker(problem.scene);
-      tandem::MotionValidator validator(problem.space, checker);
-      const double range = problem.hints.range.count("birrt") ? problem.hints.range.at("birrt")
-                                                              : problem.space.default_range();
-      OmplSide ompl_side(problem, validator, range);
-      if (std::abs(ompl_side.max_extent() - problem.space.max_extent()) >
-              1e-9 * problem.space.max_extent() ||
-          std::abs(ompl_side.range() - range) > 1e-12 * range) {
-        throw std::logic_error("OMPL's space does not match tandem's for " + name);
-      }
-      std::map<std::string, std::vector<RunResult>> results;
-      for (int i = 0; i < runs; ++i) {
-        const bool tandem_first = i % 2 == 0;
-        for (int turn = 0; turn < 2; ++turn) {
-          RunResult r = (turn == 0) == tandem_first
-                            ? run_tandem(problem, validator, range,
-                                         seed + static_cast<std::uint64_t>(i), limit, profile,
-                                         extend == "last-valid" ? tandem::ExtendMode::last_valid
-                                                                : tandem::ExtendMode::classic)
-                            : ompl_side.run(limit);
-          if (lines.is_open()) {
-            lines << nlohmann::json{{"problem", name},
-                                    {"planner", r.planner},
-                                    {"run", i},
-                                    {"seed", seed + static_cast<std::uint64_t>(i)},
-                                    {"solved", r.solved},
-                                    {"time_s", r.time_s},
-                                    {"collision_checks", r.checks},
-                                    {"nodes", r.nodes},
-                                    {"path_length", r.path_length},
-                                    {"time_limit_s", limit},
-                                    {"collision_time_s", r.collision_time_s},
-                                    {"nearest_time_s", r.nearest_time_s}}
-                         .dump()
-                  << '\n'
-                  << std::flush;
-          }
-          results[r.planner].push_back(std::move(r));
-        }
-      }
-      auto summary = [&](const std::string& planner, int& ok, double& t, double& checks) {
-        std::vector<double> times, counts;
-        ok = 0;
-        for (const auto& r : results[planner]) {
-          ok += r.solved;
-          times.push_back(r.solved ? r.time_s : limit);
-          counts.push_back(static_cast<double>(r.checks));
-        }
-        t = median(times);
-        checks = median(counts);
-      };
-      int ok_t, ok_o;
-      double t_t, t_o, c_t, c_o;
-      summary("tandem-birrt", ok_t, t_t, c_t);
-      summary("ompl-rrtconnect", ok_o, t_o, c_o);
-      std::printf("%-11s %5d %8d%% %8d%% %11.4f %11.4f %13.0f %13.0f %9.3f\n", name.c_str(), runs,
-                  100 * ok_t / runs, 100 * ok_o / runs, t_t, t_o, c_t, c_o, t_t / t_o);
-      if (profile) {
-        double total = 0, coll = 0, nn = 0;
-        for (const auto& r : results["tandem-birrt"]) {
-          total += r.time_s;
-          coll += r.collision_time_s;
-          nn += r.nearest_time_s;
-        }
-        std::printf(
-            "  tandem profile: collision checks %.1f%%, nearest neighbour %.1f%%, the rest "
-            "%.1f%%\n",
-            100 * coll / total, 100 * nn / total, 100 * (total - coll - nn) / total);
-      }
-      std::fflush(stdout);
-    }
+    return run_benchmark(o);
   } catch (const tandem::InputError& e) {
     std::cerr << "tandem-vs-ompl: error: " << e.what() << '\n';
     return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "tandem-vs-ompl: internal error: " << e.what() << '\n';
+    return 1;
   }
-  return 0;
 }
