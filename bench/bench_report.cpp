@@ -96,7 +96,7 @@ void print_report(std::FILE* out, const ProblemReport& report) {
   std::fprintf(out, "  tandem / ompl-rrtconnect (median time): %s; tandem / best OMPL (%s): %s\n",
                ratio_text(report.tandem, report.rrtconnect()).c_str(),
                best ? best->planner.c_str() : "none", ratio_text(report.tandem, best).c_str());
-  std::fprintf(out, "  paths failing OMPL's check: %d of %d (failing tandem's check_path: %d)\n",
+  std::fprintf(out, "  paths failing OMPL's check: %d of %d (failing tandem's exact check: %d)\n",
                report.paths.ompl_failures, report.paths.checked, report.paths.tandem_failures);
   std::fflush(out);
 }

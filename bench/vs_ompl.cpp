@@ -56,6 +56,7 @@ struct Options {
   std::string markdown;
   bool profile = false;
   std::string extend = "classic";
+  std::string validation = "discrete";
 };
 
 /// The problems that get --hard-time-limit.
@@ -129,9 +130,11 @@ struct TandemRun {
 /// tandem's side: its BiRRT with its own collision checker and motion validator.
 TandemRun run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator,
                      double range, std::uint64_t seed, double time_limit, bool profile,
-                     tandem::ExtendMode extend, unsigned threads) {
+                     tandem::ExtendMode extend, tandem::MotionValidation validation,
+                     unsigned threads) {
   tandem::PlannerSettings settings;
   settings.extend = extend;
+  settings.validation = validation;
   settings.seed = seed;
   settings.range = range;
   settings.profile = profile;
@@ -211,6 +214,7 @@ class ProblemBench {
         limit_(is_hard(name) ? o.hard_time_limit : o.time_limit),
         checker_(problem_.scene),
         validator_(problem_.space, checker_),
+        exact_(problem_.space, checker_),
         ompl_(problem_) {
     check_same_extent(ompl_, problem_);
     for (const std::string& p : o.planners) {
@@ -244,11 +248,13 @@ class ProblemBench {
     TandemRun t = run_tandem(
         problem_, validator_, range, seed, limit_, o_.profile,
         o_.extend == "last-valid" ? tandem::ExtendMode::last_valid : tandem::ExtendMode::classic,
-        o_.threads);
+        *tandem::parse_motion_validation(o_.validation), o_.threads);
     nlohmann::json checks;
     if (t.result.solved) {
       const bool ompl_ok = ompl_.check_path(t.path);
-      const bool tandem_ok = tandem::check_path(t.path, validator_).valid;
+      // tandem's exact check, whatever the run's validation was.
+      exact_.configure({tandem::MotionValidation::exact, 0.0});
+      const bool tandem_ok = tandem::check_path(t.path, exact_).valid;
       ++paths_.checked;
       paths_.ompl_failures += ompl_ok ? 0 : 1;
       paths_.tandem_failures += tandem_ok ? 0 : 1;
@@ -282,6 +288,7 @@ class ProblemBench {
   double limit_;
   tandem::CollisionChecker checker_;
   tandem::MotionValidator validator_;
+  tandem::MotionValidator exact_;
   bench::OmplAppProblem ompl_;
   std::vector<std::unique_ptr<bench::OmplPlannerRunner>> runners_;
   std::map<std::string, std::vector<RunResult>> results_;
@@ -316,6 +323,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--markdown", o.markdown, "Also write the summary as a Markdown table here");
   app.add_flag("--profile", o.profile,
                "Time tandem's collision checks and nearest-neighbour queries");
+  app.add_option("--validation", o.validation,
+                 "tandem's motion validation: discrete (as OMPL's) or exact (whole motions)")
+      ->check(CLI::IsMember({"discrete", "exact"}))
+      ->capture_default_str();
   app.add_option("--extend", o.extend, "tandem's extension: classic or last-valid")
       ->check(CLI::IsMember({"classic", "last-valid"}))
       ->capture_default_str();
