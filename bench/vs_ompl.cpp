@@ -214,7 +214,7 @@ class ProblemBench {
         limit_(is_hard(name) ? o.hard_time_limit : o.time_limit),
         checker_(problem_.scene),
         validator_(problem_.space, checker_),
-        exact_(problem_.space, checker_),
+        exact_(problem_.space, checker_, {tandem::MotionValidation::exact, 0.0}),
         ompl_(problem_) {
     check_same_extent(ompl_, problem_);
     for (const std::string& p : o.planners) {
@@ -253,7 +253,6 @@ class ProblemBench {
     if (t.result.solved) {
       const bool ompl_ok = ompl_.check_path(t.path);
       // tandem's exact check, whatever the run's validation was.
-      exact_.configure({tandem::MotionValidation::exact, 0.0});
       const bool tandem_ok = tandem::check_path(t.path, exact_).valid;
       ++paths_.checked;
       paths_.ompl_failures += ompl_ok ? 0 : 1;

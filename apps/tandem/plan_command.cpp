@@ -153,8 +153,7 @@ int run_plan(const PlanArgs& args) {
   const RunOutcome run = execute_run(problem, spec, checker);
   const bool solved = run.status == PlannerStatus::solved;
   // The path is simplified and checked the way the planner checked its motions.
-  MotionValidator validator(problem.space, checker,
-                            {spec.settings.validation, spec.settings.tolerance});
+  MotionValidator validator(problem.space, checker, validation_settings(spec.settings));
   const PlannedPath planned =
       solved ? finish_path(args, problem, spec, run, validator) : PlannedPath{};
   if (!args.svg.empty())

@@ -51,14 +51,19 @@ void MotionValidator::configure(const ValidationSettings& settings) {
   tolerance_ = settings.tolerance > 0.0 ? settings.tolerance : 1e-5 * space_.translation_extent();
 }
 
-bool MotionValidator::collision_free(const Config& q) {
+template <class Query>
+auto MotionValidator::counted(Query query) {
   ++checks_;
   if (!profiling_)
-    return checker_.is_collision_free(q);
+    return query();
   const Stopwatch watch;
-  const bool free = checker_.is_collision_free(q);
+  const auto answer = query();
   check_seconds_ += watch.seconds();
-  return free;
+  return answer;
+}
+
+bool MotionValidator::collision_free(const Config& q) {
+  return counted([&] { return checker_.is_collision_free(q); });
 }
 
 double MotionValidator::clearance(const Config& q, double cap) {
@@ -66,13 +71,7 @@ double MotionValidator::clearance(const Config& q, double cap) {
   // cap of one resolution step costs less over a motion than certifying it in fewer, larger
   // stretches (Easy: 2.5 times less planning time than no limit; 0.25 and 4 steps both slower).
   cap = std::max(std::min(cap, kCapSteps * space_.translation_step()), tolerance_);
-  ++checks_;
-  if (!profiling_)
-    return checker_.clearance_bound(q, cap);
-  const Stopwatch watch;
-  const double c = checker_.clearance_bound(q, cap);
-  check_seconds_ += watch.seconds();
-  return c;
+  return counted([&] { return checker_.clearance_bound(q, cap); });
 }
 
 double MotionValidator::displacement_rate(const Config& a, const Config& b) const {
@@ -172,6 +171,8 @@ MotionCheck MotionValidator::last_valid_exact(const Config& a, const Config& b) 
   const double rate = displacement_rate(a, b);
   if (!(rate > 0.0)) {
     r.valid = is_valid(b);
+    if (r.valid)
+      r.last_valid = b;
     return r;
   }
   // Forward: from the last certified configuration at s with clearance c, the motion is free up

@@ -97,7 +97,8 @@ class MotionValidator {
 
   /// Sweeps from a toward b and reports the last valid configuration (the papers' Add_Tree
   /// extension), assuming a is valid. In exact mode the sweep advances by certified stretches and
-  /// the last valid configuration is the last one whose clearance bound reached the tolerance;
+  /// stops in front of an obstacle: the last valid configuration is the last one whose clearance
+  /// bound reached a tenth of a resolution step (and the tolerance);
   /// last_valid_step counts the discrete steps (of segment_count) it lies beyond a, so that a
   /// blocked extension adds a node only if it got at least one step away, in both modes.
   MotionCheck check_motion_last_valid(const Config& a, const Config& b) {
@@ -109,8 +110,11 @@ class MotionValidator {
   std::uint64_t checks() const { return checks_; }
 
  private:
+  /// Runs one query of the checker, counted in checks() and timed while profiling.
+  template <class Query>
+  auto counted(Query query);
   bool collision_free(const Config& q);
-  /// checker_.clearance_bound(q, cap), counted and timed.
+  /// checker_.clearance_bound(q, cap), the cap limited to one resolution step.
   double clearance(const Config& q, double cap);
   /// L: no point of the object moves more than L |s - s'| between fractions s and s' of a -> b.
   double displacement_rate(const Config& a, const Config& b) const;

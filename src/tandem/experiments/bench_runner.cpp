@@ -272,7 +272,7 @@ class JobQueue {
     if (outcome.status == PlannerStatus::interrupted)
       return false;
     // Checked the way the run's planner checked its motions.
-    validator.configure({spec.settings.validation, spec.settings.tolerance});
+    validator.configure(validation_settings(spec.settings));
     const bool valid = outcome.status == PlannerStatus::solved && !outcome.path.empty() &&
                        check_path(outcome.path, validator).valid;
     recorder_.record(make_record(problem_.name, config.label(), config.values, job.seed, time_limit,

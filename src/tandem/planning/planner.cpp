@@ -52,7 +52,7 @@ Planner::Planner(MotionValidator& validator, const Config& start, const Config& 
   if (!(settings.goal_bias >= 0.0 && settings.goal_bias <= 1.0)) {
     throw std::invalid_argument("goal_bias must be in [0, 1]");
   }
-  validator.configure({settings.validation, settings.tolerance});
+  validator.configure(validation_settings(settings));
 }
 
 void Planner::update_counts() {

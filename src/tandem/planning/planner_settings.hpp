@@ -47,6 +47,11 @@ struct PlannerSettings {
   InteractionSettings interaction;
 };
 
+/// How a planner with these settings checks motions (its validator is configured so).
+inline ValidationSettings validation_settings(const PlannerSettings& s) {
+  return {s.validation, s.tolerance};
+}
+
 /// The declarations of PlannerSettings' tunable fields (range, goal_bias, extend,
 /// nearest_neighbors, validation, tolerance); the seed is the run's, not a tunable.
 const ParamTable<PlannerSettings>& planner_parameters();

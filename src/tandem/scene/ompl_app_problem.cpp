@@ -49,12 +49,12 @@ Ini read_ini(const std::filesystem::path& file) {
     if (key.empty())
       throw InputError(name + ":" + std::to_string(line), "empty key");
     auto& slot = ini[section];
-    // OMPL.app's benchmark files may name a planner several times in [planner] to compare
-    // settings ('aps=', 'aps.name=APS1', ..., then 'aps=', 'aps.name=APS4', ...): each repetition
-    // starts a new planner entry. tandem plans with one entry per planner: the first.
-    if (section == "planner" && slot.count(key) != 0)
-      continue;
     if (slot.count(key) != 0) {
+      // OMPL.app's benchmark files may name a planner several times in [planner] to compare
+      // settings ('aps=', 'aps.name=APS1', ..., then 'aps=', 'aps.name=APS4', ...): each
+      // repetition starts a new planner entry. tandem plans with one entry per planner: the first.
+      if (section == "planner")
+        continue;
       throw InputError(
           name + ":" + std::to_string(line),
           "key '" + key + "' repeated (first on line " + std::to_string(slot[key].line) + ")");
