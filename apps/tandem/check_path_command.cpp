@@ -4,8 +4,10 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "tandem/core/parameter.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path.hpp"
+#include "tandem/planning/planner_settings.hpp"
 
 namespace tandem::cli {
 namespace {
@@ -13,16 +15,15 @@ namespace {
 struct CheckArgs {
   ProblemArgs problem;
   std::string path_file;
-  std::string validation = "discrete";
-  double tolerance = 0.0;
+  /// --validation and --tolerance, read as the planners' tunables are.
+  PlannerSettings settings;
 };
 
 int run_check(const CheckArgs& args) {
   const Problem problem = load_problem(args.problem);
   const Path path = read_path_file(args.path_file, problem.space);
   CollisionChecker checker(problem.scene);
-  MotionValidator validator(problem.space, checker,
-                            {*parse_motion_validation(args.validation), args.tolerance});
+  MotionValidator validator(problem.space, checker, validation_settings(args.settings));
   const PathCheck check = check_path(path, validator);
   if (!check.valid) {
     std::cout << args.path_file << ": invalid at index " << check.index << ": " << check.describe()
@@ -48,17 +49,15 @@ Command add_check_path_command(CLI::App& app) {
   app.add_option("PATHFILE", args->path_file,
                  "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
       ->required();
-  app.add_option("--validation", args->validation,
-                 "exact: every motion collision-free along its whole length, no state closer than "
-                 "the tolerance to an obstacle; discrete: every state at the problem's "
-                 "resolution (OMPL's check)")
-      ->check(CLI::IsMember({"exact", "discrete"}))
-      ->capture_default_str();
-  app.add_option("--tolerance", args->tolerance,
-                 "Exact validation: closer than this counts as contact (0: 1e-5 x the bounds' "
-                 "diagonal)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  for (const char* name : {"validation", "tolerance"}) {
+    const Param<PlannerSettings>& p = *find_param(planner_parameters(), name);
+    app.add_option_function<std::string>(
+        p.spec.option(),
+        [args, &p](const std::string& text) {
+          p.set(args->settings, parse_param_option(p.spec, text));
+        },
+        std::string(p.spec.help) + " (default: " + format_param(p.get(PlannerSettings{})) + ")");
+  }
   app.footer(
       "Checks every state (bounds, collision) and every motion between consecutive states: the "
       "states at the problem's resolution (discrete, the default) or the whole continuous motion "

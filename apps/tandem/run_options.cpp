@@ -51,12 +51,9 @@ RunSpec make_spec(const RunArgs& args, const Problem& problem) {
   spec.time_limit = args.time_limit.value_or(problem.hints.time_limit.value_or(kDefaultTimeLimit));
   for (const auto& [name, text] : args.tunables) {
     const Param<RunSpec>& p = *find_param(run_tunables(), name);
-    const std::string option = p.spec.option();
-    const auto value = parse_param_text(p.spec, text);
-    if (const auto* fault = std::get_if<std::string>(&value))
-      throw InputError(option, *fault);
-    require_used(spec, name, option);
-    p.set(spec, std::get<ParamValue>(value));
+    const ParamValue value = parse_param_option(p.spec, text);
+    require_used(spec, name, p.spec.option());
+    p.set(spec, value);
   }
   return spec;
 }

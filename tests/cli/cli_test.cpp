@@ -137,6 +137,17 @@ TEST(Cli, MalformedPathFile) {
                    {"none.path", "no such file"});
 }
 
+TEST(Cli, CheckPathValidationOptionsAreCheckedAsThePlannersAre) {
+  const std::string path = (test::source_dir() / "scenes" / "cluttered-1.path").string();
+  expect_bad_input({"check-path", "cluttered-1", path, "--validation", "bogus"},
+                   {"--validation: must be one of exact, discrete, not 'bogus'"});
+  expect_bad_input({"check-path", "cluttered-1", path, "--tolerance", "nan"},
+                   {"--tolerance: must be a number at least 0, not nan"});
+  expect_bad_input({"check-path", "cluttered-1", path, "--tolerance", "-1"},
+                   {"--tolerance: must be a number at least 0, not -1"});
+  EXPECT_EQ(run_tandem({"check-path", "cluttered-1", path, "--validation", "exact"}).exit_code, 0);
+}
+
 TEST(Cli, UnknownOptionsAndNonsensicalValues) {
   expect_bad_input({"plan", "cluttered-1", "--frobnicate"}, {"--frobnicate"});
   expect_bad_input({"plan", "cluttered-1", "--time-limit", "-1"}, {"--time-limit"});

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "tandem/core/error.hpp"
+
 namespace tandem {
 namespace {
 
@@ -118,6 +120,13 @@ std::optional<std::string> param_fault(const ParamSpec& s, const ParamValue& val
       return fault(s, format_param(value));
   }
   return std::nullopt;
+}
+
+ParamValue parse_param_option(const ParamSpec& spec, std::string_view text) {
+  auto value = parse_param_text(spec, text);
+  if (const auto* fault = std::get_if<std::string>(&value))
+    throw InputError(spec.option(), *fault);
+  return std::get<ParamValue>(std::move(value));
 }
 
 std::variant<ParamValue, std::string> parse_param_text(const ParamSpec& s, std::string_view text) {

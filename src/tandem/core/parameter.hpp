@@ -66,6 +66,10 @@ std::optional<std::string> param_fault(const ParamSpec& spec, const ParamValue& 
 std::variant<ParamValue, std::string> parse_param_text(const ParamSpec& spec,
                                                        std::string_view text);
 
+/// The value `text` means for `spec`, given on the command line as spec.option(); throws
+/// InputError naming the option and the fault.
+ParamValue parse_param_option(const ParamSpec& spec, std::string_view text);
+
 /// `value` converted to the spec's kind (an integer given as a real, a real given as an integer);
 /// call after param_fault() found nothing.
 ParamValue normalise_param(const ParamSpec& spec, const ParamValue& value);
