@@ -105,5 +105,24 @@ TEST(InteractiveBiRRT, ALiveSessionReplaysToTheSameTree) {
   EXPECT_EQ(all_nodes(*planner), live_nodes);
 }
 
+TEST(LiveFeed, RecordsTheStateItHandsOutOnceAndAgainAfterARestart) {
+  LatestValue<OperatorState> channel;
+  LiveFeed feed(channel);
+  EXPECT_EQ(feed.at(0), nullptr);
+  OperatorState s;
+  s.sequence = 1;
+  channel.publish(s);
+  ASSERT_NE(feed.at(3), nullptr);
+  ASSERT_NE(feed.at(4), nullptr);
+  ASSERT_EQ(feed.record().size(), 1u) << "the same state recorded twice";
+  EXPECT_EQ(feed.record()[0].iteration, 3u);
+  feed.take_record();
+  feed.restart();  // a new planner, and no new state since
+  ASSERT_NE(feed.at(0), nullptr);
+  ASSERT_EQ(feed.record().size(), 1u) << "the new planner's first state is not in its record";
+  EXPECT_EQ(feed.record()[0].iteration, 0u);
+  EXPECT_EQ(feed.record()[0].state.sequence, 1u);
+}
+
 }  // namespace
 }  // namespace tandem

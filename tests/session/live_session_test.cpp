@@ -21,15 +21,28 @@ using test::detour_problem;
 using test::live_spec;
 using ::testing::HasSubstr;
 
+/// Options of a session journaled in `dir`, with a tree digest every `digest_every_s` seconds.
+LiveOptions journaled(const test::TempDir& dir, double digest_every_s) {
+  LiveOptions options;
+  options.journal = dir.path() / "live.jsonl";
+  options.digest_every_s = digest_every_s;
+  return options;
+}
+
+/// A live run of seed `seed` where the operator alone grows the tree: slow through the gap, so
+/// there is time to tune, pause and record.
+RunSpec operator_alone(std::uint64_t seed) {
+  RunSpec spec = live_spec(seed);
+  spec.settings.interaction.alpha = 0.0;
+  return spec;
+}
+
 TEST(LiveSession, ReplaysToTheIdenticalTree) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options;
-  options.journal = dir.path() / "live.jsonl";
+  LiveOptions options = journaled(dir, 0.05);
   options.operator_rate_hz = 2000.0;
-  options.digest_every_s = 0.05;
-  RunSpec spec = live_spec(3);
-  spec.settings.interaction.alpha = 0.0;  // the operator alone: slow through the gap
+  RunSpec spec = operator_alone(3);
   LiveSession session(problem, spec, options);
   // Tuning from another thread while the planner runs: the computer gets authority too. The
   // change is journaled with the step after which it applied, and replayed there.
@@ -63,11 +76,8 @@ TEST(LiveSession, ReplaysToTheIdenticalTree) {
 TEST(LiveSession, AKilledSessionReplaysUpToItsLastRecord) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options;
-  options.journal = dir.path() / "live.jsonl";
-  options.digest_every_s = 0.01;
-  RunSpec spec = live_spec(4);
-  spec.settings.interaction.alpha = 0.0;  // the operator alone: slow, so there is time to record
+  LiveOptions options = journaled(dir, 0.01);
+  RunSpec spec = operator_alone(4);
   spec.time_limit = 0.5;
   LiveSession session(problem, spec, options);
   session.run();
@@ -103,13 +113,10 @@ bool eventually(F done) {
 TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options;
-  options.journal = dir.path() / "live.jsonl";
-  options.digest_every_s = 0.02;
+  LiveOptions options = journaled(dir, 0.02);
   options.stay = true;  // as with the viewer: stays after solving until stopped
   options.spacemouse = false;
-  RunSpec spec = live_spec(5);
-  spec.settings.interaction.alpha = 0.0;
+  RunSpec spec = operator_alone(5);
   LiveSession session(problem, spec, options);
   PlannerStatus status = PlannerStatus::running;
   std::thread planner([&] { status = session.run(); });
@@ -161,6 +168,46 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   EXPECT_EQ(restarts, 1u);
   EXPECT_TRUE(replay.matched()) << "mismatch at step " << replay.mismatch_at.value_or(0);
   EXPECT_EQ(replay.digest, live_digest);
+}
+
+// A session started paused, and the viewer's pause, reset, ... resume: the journal records digests
+// of the empty tree while the session waits, at step 0 and at the step count of the reset. The
+// replay compares them with the planner before its first step (after a reset, the new planner, not
+// the old one that ran up to that step).
+TEST(LiveSession, DigestsRecordedWhilePausedAtTheStartAndAfterAResetReplay) {
+  const Problem problem = detour_problem();
+  test::TempDir dir;
+  LiveOptions options = journaled(dir, 0.005);
+  options.stay = true;
+  options.spacemouse = false;
+  options.start_paused = true;
+  RunSpec spec = operator_alone(6);
+  LiveSession session(problem, spec, options);
+  std::thread planner([&] { session.run(); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  session.resume();
+  ASSERT_TRUE(eventually([&] { return session.progress().stats.nodes > 3; }));
+  session.pause();
+  ASSERT_TRUE(eventually([&] { return session.progress().paused; }));
+  session.reset();
+  ASSERT_TRUE(eventually([&] { return session.progress().resets == 1; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // ten digest periods, paused
+  session.resume();
+  EXPECT_TRUE(eventually([&] { return session.progress().stats.nodes > 3; }));
+  session.stop();
+  planner.join();
+
+  const Journal journal = read_journal(options.journal);
+  ASSERT_EQ(journal.resets.size(), 1u);
+  const std::uint64_t reset_at = journal.resets[0];
+  std::size_t at_reset = 0;
+  for (const JournalDigest& d : journal.digests)
+    at_reset += d.steps == reset_at ? 1 : 0;
+  ASSERT_GE(at_reset, 2u) << "digests of the old tree and of the new one, both at the reset";
+  ASSERT_EQ(journal.digests.front().steps, 0u) << "no digest while paused at the start";
+  const ReplayResult replay = replay_journal(problem, journal);
+  EXPECT_TRUE(replay.matched()) << "mismatch at step " << replay.mismatch_at.value_or(0);
+  EXPECT_EQ(replay.digest, format_digest(tree_digest(session.planner().trees())));
 }
 
 }  // namespace

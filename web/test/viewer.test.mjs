@@ -7,8 +7,8 @@
 // the layered drawing for software renderers shows the same picture as drawing everything.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { readFileSync, writeFileSync } from 'node:fs';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { copyFileSync, readFileSync, writeFileSync } from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 import {
@@ -326,8 +326,11 @@ test('pause, step, reset and tuning from the viewer; the session replays to the 
   const journal = readFileSync(file, 'utf8');
   assert.match(journal, /"reset":/);
   assert.match(journal, /"params":/);
-  const out = execFileSync(tandemBin, ['replay', file], { encoding: 'utf8' });
-  assert.match(out, /identical to the session's tree/);
+  const replay = spawnSync(tandemBin, ['replay', file], { encoding: 'utf8' });
+  const kept = artefactPath('tuning-session.jsonl');
+  if (replay.status !== 0) copyFileSync(file, kept);
+  assert.equal(replay.status, 0, `tandem replay ${file} (kept as ${kept}): ${replay.stdout}${replay.stderr}`);
+  assert.match(replay.stdout, /identical to the session's tree/);
 });
 
 /** The session's announced parameters (hello.parameters) and the tuning panel's controls. */

@@ -75,6 +75,9 @@ class LiveFeed final : public OperatorFeed {
   const std::vector<FeedRecord>& record() const { return record_; }
   /// Hands over the record so far and starts a new one (a journal writes it away as it grows).
   std::vector<FeedRecord> take_record() { return std::exchange(record_, {}); }
+  /// For a new planner (the user started over): its first state is recorded, even if it is the
+  /// one the previous planner saw last (a replay starts the new planner with no state in hand).
+  void restart() { last_sequence_ = 0; }
 
  private:
   LatestValue<OperatorState>& channel_;

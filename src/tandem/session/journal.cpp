@@ -227,6 +227,7 @@ void read_digest(const json& j, const RecordAt& at, Journal& journal) {
   d.steps = j.at("steps").get<std::uint64_t>();
   d.iterations = j.at("iterations").get<std::uint64_t>();
   d.nodes = j.at("nodes").get<std::size_t>();
+  d.segment = journal.resets.size();
   if (!journal.digests.empty() && d.steps < journal.digests.back().steps)
     at.fail("digest before the previous one");
   journal.digests.push_back(d);

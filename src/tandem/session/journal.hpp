@@ -65,6 +65,7 @@ struct JournalDigest {
   std::size_t nodes = 0;
   std::string digest;
   std::optional<std::string> end_status;  ///< set for the "end" record
+  std::size_t segment = 0;  ///< resets before it: which planner's tree (set when read back)
 };
 
 struct Journal {

@@ -82,6 +82,7 @@ LiveSession::~LiveSession() {
 
 void LiveSession::start_planner() {
   planner_.reset();
+  feed_.restart();
   planner_ = make_planner(spec_.mode, validator_, problem_.start, problem_.goal, spec_.settings,
                           &interaction_);
   status_ = PlannerStatus::running;
