@@ -124,9 +124,9 @@ class TreeView {
       }
     }
     this.count = needed;
-    // Upload only the new part.
+    // Upload only the new part. The ranges add up until the next frame uploads (and clears)
+    // them: several batches may come between two frames.
     const upload = (attr, from, to) => {
-      attr.clearUpdateRanges();
       attr.addUpdateRange(from, to - from);
       attr.needsUpdate = true;
     };
