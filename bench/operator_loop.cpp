@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "parse_arguments.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/interaction/operator_model.hpp"
 #include "tandem/operators/guide_follower.hpp"
@@ -20,7 +21,8 @@ int main(int argc, char** argv) {
   CLI::App app{"The operator loop's rate on the built-in scenes (nearest-obstacle query included)"};
   double seconds = 2.0;
   app.add_option("--seconds", seconds, "Time per scene (default 2)")->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = bench::parse_arguments(app, argc, argv, "tandem-operator-loop"))
+    return *code;
 
   std::printf(
       "| scene | obstacles | states/s | mean per state (us) | states with a contact frame |\n");

@@ -8,8 +8,9 @@
 namespace bench {
 
 struct RunResult {
-  std::string planner;       ///< "tandem-birrt", "ompl-rrtconnect", "ompl-kpiece1", ...
+  std::string planner;       ///< "tandem-birrt+rrt", "ompl-rrtconnect", "ompl-kpiece1", ...
   unsigned threads = 1;      ///< the threads the planner was given
+  unsigned member = 0;       ///< tandem only: the portfolio member whose search won
   double range = 0.0;        ///< the planner's range after its setup
   bool solved = false;       ///< an exact solution
   double time_s = 0.0;       ///< wall time of the solve call

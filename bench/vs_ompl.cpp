@@ -1,4 +1,5 @@
-// tandem's BiRRT against OMPL 1.5's planners, side by side on OMPL.app's problems.
+// tandem (its BiRRT, RRT or mixed portfolio: --mode) against OMPL 1.5's planners, side by side on
+// OMPL.app's problems.
 //
 // OMPL is measured as OMPL.app's users run it (ompl_app_setup.hpp): OMPL.app's FCL collision
 // model and validity checker, built here from OMPL and FCL directly, OMPL's space, metric,
@@ -31,11 +32,13 @@
 
 #include "bench_report.hpp"
 #include "ompl_app_setup.hpp"
+#include "parse_arguments.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/planning/planner.hpp"
 #include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/run.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 
 namespace fs = std::filesystem;
@@ -56,8 +59,24 @@ struct Options {
   std::string markdown;
   bool profile = false;
   std::string extend = "classic";
-  std::string validation = "discrete";
+  std::string validation = "exact";
+  std::string mode = "birrt+rrt";
 };
+
+/// The name of tandem's runs in the results: "tandem-" and its planner.
+std::string tandem_name(const Options& o) {
+  return "tandem-" + o.mode;
+}
+
+/// The registry's planners that plan alone (no operator): tandem's choices for --mode.
+std::vector<std::string> planners_alone() {
+  std::vector<std::string> names;
+  for (const tandem::PlannerEntry& e : tandem::planner_registry()) {
+    if (!e.uses_operator)
+      names.emplace_back(e.name);
+  }
+  return names;
+}
 
 /// The problems that get --hard-time-limit.
 bool is_hard(const std::string& name) {
@@ -127,37 +146,37 @@ struct TandemRun {
   tandem::Path path;
 };
 
-/// tandem's side: its BiRRT with its own collision checker and motion validator.
-TandemRun run_tandem(const tandem::Problem& problem, tandem::MotionValidator& validator,
-                     double range, std::uint64_t seed, double time_limit, bool profile,
-                     tandem::ExtendMode extend, tandem::MotionValidation validation,
-                     unsigned threads) {
-  tandem::PlannerSettings settings;
-  settings.extend = extend;
-  settings.validation = validation;
-  settings.seed = seed;
-  settings.range = range;
-  settings.profile = profile;
-  // TODO(threads): settings.threads = threads;
-  auto planner = tandem::make_planner("birrt", validator, problem.start, problem.goal, settings);
-  tandem::Termination t;
-  t.time_limit_s = time_limit;
+/// tandem's side: its planner (--mode) with its own collision checker, as `tandem plan` runs it
+/// (with --threads above 1, its portfolio of searches).
+TandemRun run_tandem(const tandem::Problem& problem, tandem::CollisionChecker& checker,
+                     double range, std::uint64_t seed, double time_limit, const Options& o) {
+  tandem::RunSpec spec;
+  spec.mode = o.mode;
+  spec.settings.extend =
+      o.extend == "last-valid" ? tandem::ExtendMode::last_valid : tandem::ExtendMode::classic;
+  spec.settings.validation = *tandem::parse_motion_validation(o.validation);
+  spec.settings.seed = seed;
+  spec.settings.range = range;
+  spec.settings.profile = o.profile;
+  spec.settings.threads = o.threads;
+  spec.time_limit = time_limit;
   const tandem::Stopwatch watch;
-  const tandem::PlannerStatus status = planner->solve(t);
+  const tandem::RunOutcome outcome = tandem::execute_run(problem, spec, checker);
   TandemRun run;
   RunResult& r = run.result;
-  r.planner = "tandem-birrt";
-  r.threads = threads;
-  r.range = planner->range();
+  r.planner = tandem_name(o);
+  r.threads = o.threads;
+  r.member = outcome.member;
+  r.range = outcome.range;
   r.time_s = watch.seconds();
-  r.solved = status == tandem::PlannerStatus::solved;
-  r.checks = planner->stats().collision_checks;
-  r.nodes = planner->stats().nodes;
-  r.collision_time_s = planner->stats().collision_time_s;
-  r.nearest_time_s = planner->stats().nearest_time_s;
+  r.solved = outcome.status == tandem::PlannerStatus::solved;
+  r.checks = outcome.stats.collision_checks;
+  r.nodes = outcome.stats.nodes;
+  r.collision_time_s = outcome.stats.collision_time_s;
+  r.nearest_time_s = outcome.stats.nearest_time_s;
   if (r.solved) {
-    run.path = planner->solution();
-    r.path_length = tandem::path_length(problem.space, run.path);
+    run.path = outcome.path;
+    r.path_length = outcome.path_length;
   }
   return run;
 }
@@ -167,6 +186,7 @@ void write_json_line(std::ostream& out, const std::string& problem, int run, std
   nlohmann::json line{{"problem", problem},
                       {"planner", r.planner},
                       {"threads", r.threads},
+                      {"member", r.member},
                       {"run", run},
                       {"seed", seed},
                       {"solved", r.solved},
@@ -194,13 +214,15 @@ void check_same_extent(const bench::OmplAppProblem& ompl, const tandem::Problem&
 
 void print_profile(const std::vector<RunResult>& runs) {
   double total = 0, coll = 0, nn = 0;
+  // Shares of the threads' time: a portfolio's query times add up over its members.
   for (const RunResult& r : runs) {
-    total += r.time_s;
+    total += r.time_s * r.threads;
     coll += r.collision_time_s;
     nn += r.nearest_time_s;
   }
   std::printf(
-      "  tandem profile: collision checks %.1f%%, nearest neighbour %.1f%%, the rest %.1f%%\n",
+      "  tandem profile (of its threads' time): collision checks %.1f%%, nearest neighbour "
+      "%.1f%%, the rest %.1f%%\n",
       100 * coll / total, 100 * nn / total, 100 * (total - coll - nn) / total);
 }
 
@@ -237,18 +259,16 @@ class ProblemBench {
     return report();
   }
 
-  const std::vector<RunResult>& tandem_runs() { return results_["tandem-birrt"]; }
+  const std::vector<RunResult>& tandem_runs() { return results_[tandem_name(o_)]; }
 
  private:
   void run_tandem_once(int i, std::ostream* lines) {
-    auto hint = problem_.hints.range.find("birrt");
+    // The range the problem's [planner] section gives tandem's planner, as `tandem plan` reads it.
+    auto hint = problem_.hints.range.find(std::string(tandem::find_planner(o_.mode)->ompl_range));
     const double range =
         hint != problem_.hints.range.end() ? hint->second : problem_.space.default_range();
     const std::uint64_t seed = o_.seed + static_cast<std::uint64_t>(i);
-    TandemRun t = run_tandem(
-        problem_, validator_, range, seed, limit_, o_.profile,
-        o_.extend == "last-valid" ? tandem::ExtendMode::last_valid : tandem::ExtendMode::classic,
-        *tandem::parse_motion_validation(o_.validation), o_.threads);
+    TandemRun t = run_tandem(problem_, checker_, range, seed, limit_, o_);
     nlohmann::json checks;
     if (t.result.solved) {
       const bool ompl_ok = ompl_.check_path(t.path);
@@ -274,7 +294,7 @@ class ProblemBench {
     rep.problem = name_;
     rep.time_limit = limit_;
     rep.runs = o_.runs;
-    rep.tandem = bench::summarize(results_["tandem-birrt"], limit_);
+    rep.tandem = bench::summarize(results_[tandem_name(o_)], limit_);
     for (const auto& runner : runners_)
       rep.ompl.push_back(bench::summarize(results_[runner->label()], limit_));
     rep.paths = paths_;
@@ -286,6 +306,7 @@ class ProblemBench {
   tandem::Problem problem_;
   double limit_;
   tandem::CollisionChecker checker_;
+  /// Builds the checker's distance grid once, before the timed runs (as a user's session would).
   tandem::MotionValidator validator_;
   tandem::MotionValidator exact_;
   bench::OmplAppProblem ompl_;
@@ -301,7 +322,7 @@ void add_options(CLI::App& app, Options& o) {
       ->delimiter(',');
   app.add_option("--planners", o.planners,
                  "OMPL planners: rrtconnect, kpiece1, bkpiece1, lbkpiece1, biest, sbl, prrt, "
-                 "parallel-rrtconnect (tandem's birrt always runs)")
+                 "parallel-rrtconnect (tandem always runs)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--runs", o.runs, "Runs per planner and problem")
@@ -315,7 +336,8 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   app.add_option("--seed", o.seed, "tandem's run i uses seed + i; OMPL is seeded once with it")
       ->capture_default_str();
-  app.add_option("--threads", o.threads, "Threads of prrt and parallel-rrtconnect")
+  app.add_option("--threads", o.threads,
+                 "Threads of tandem (its portfolio), prrt and parallel-rrtconnect")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--jsonl", o.jsonl, "Also write one JSON line per run here");
@@ -325,6 +347,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--validation", o.validation,
                  "tandem's motion validation: discrete (as OMPL's) or exact (whole motions)")
       ->check(CLI::IsMember({"discrete", "exact"}))
+      ->capture_default_str();
+  app.add_option("--mode", o.mode,
+                 "tandem's planner: birrt, rrt or birrt+rrt (on one thread, birrt+rrt is birrt)")
+      ->check(CLI::IsMember(planners_alone()))
       ->capture_default_str();
   app.add_option("--extend", o.extend, "tandem's extension: classic or last-valid")
       ->check(CLI::IsMember({"classic", "last-valid"}))
@@ -350,8 +376,6 @@ int run_benchmark(const Options& o) {
     ProblemBench problem(names[i], cfgs[i], o);
     const bench::ProblemReport report = problem.run(lines.is_open() ? &lines : nullptr);
     bench::print_report(stdout, report);
-    if (o.threads > 1)
-      std::printf("  (tandem-birrt records --threads but does not use it yet: one thread)\n");
     if (o.profile)
       print_profile(problem.tandem_runs());
     if (markdown.is_open())
@@ -363,10 +387,11 @@ int run_benchmark(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"tandem's BiRRT against OMPL's planners as OMPL.app runs them, runs alternating"};
+  CLI::App app{"tandem against OMPL's planners as OMPL.app runs them, runs alternating"};
   Options o;
   add_options(app, o);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = bench::parse_arguments(app, argc, argv, "tandem-vs-ompl"))
+    return *code;
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   ompl::RNG::setSeed(o.seed);  // once, before OMPL makes its first generator

@@ -18,6 +18,7 @@
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/render/svg_render.hpp"
+#include "tandem/runs/portfolio.hpp"
 #include "tandem/runs/run.hpp"
 #include "tandem/runs/run_record.hpp"
 
@@ -121,7 +122,12 @@ void print_summary(const PlanArgs& args, const Problem& problem, const RunSpec& 
             << (solved ? "solved" : "not solved (" + std::string(to_string(run.status)) + ")")
             << " by " << spec.mode << " in " << stats.time_s << " s, " << stats.iterations
             << " iterations, " << stats.nodes << " nodes, " << stats.collision_checks
-            << " collision checks (seed " << spec.settings.seed << ")\n";
+            << " collision checks (seed " << spec.settings.seed;
+  if (run.threads > 1) {
+    std::cout << ", best of " << run.threads << " searches on as many threads: member "
+              << run.member << ", " << member_planner(spec.mode, run.member);
+  }
+  std::cout << ")\n";
   if (uses_operator(spec)) {
     std::cout << "operator: " << run.operator_description << "; nodes from random samples "
               << stats.nodes_by_source[static_cast<std::size_t>(NodeSource::random)]
@@ -146,7 +152,10 @@ int run_plan(const PlanArgs& args) {
   require_writable(args.out);
   require_writable(args.svg);
   const Problem problem = load_problem(args.run.problem);
-  const RunSpec spec = make_spec(args.run, problem);
+  RunSpec spec = make_spec(args.run, problem);
+  // Shown resolved: --threads 0 (the default) is one per core.
+  if (!uses_operator(spec))
+    spec.settings.threads = resolve_threads(spec);
 
   CollisionChecker checker(problem.scene);
   require_valid_endpoints(problem, checker);

@@ -152,6 +152,14 @@ TEST(Cli, UnknownOptionsAndNonsensicalValues) {
   expect_bad_input({"plan", "cluttered-1", "--frobnicate"}, {"--frobnicate"});
   expect_bad_input({"plan", "cluttered-1", "--time-limit", "-1"}, {"--time-limit"});
   expect_bad_input({"plan", "cluttered-1", "--time-limit", "soon"}, {"--time-limit"});
+  expect_bad_input({"plan", "cluttered-1", "--distance-grid", "maybe"},
+                   {"--distance-grid: must be one of on, off, not 'maybe'"});
+  expect_bad_input({"plan", "cluttered-1", "--threads", "-1"},
+                   {"--threads: must be a whole number in [0, 256], not -1"});
+  expect_bad_input({"plan", "cluttered-1", "--threads", "300"}, {"--threads"});
+  expect_bad_input({"plan", "cluttered-1", "--threads", "two"}, {"--threads"});
+  expect_bad_input({"plan", "cluttered-1", "--mode", "interactive", "--threads", "2"},
+                   {"--threads: planner 'interactive' does not use threads"});
   expect_bad_input({"plan", "cluttered-1", "--range", "-1"}, {"--range"});
   expect_bad_input({"plan", "cluttered-1", "--seed", "-3"}, {"--seed"});
   expect_bad_input({"plan", "cluttered-1", "--planner", "prm"}, {"--planner"});
@@ -363,9 +371,9 @@ TEST(Cli, AnInteractiveSessionReplaysToTheIdenticalTree) {
   TempDir dir;
   const auto journal = dir.path() / "session.jsonl";
   const auto path = dir.path() / "live.path";
-  const test::RunResult live =
-      run_tandem({"interactive", "cluttered-1", "--headless", "--seed", "2", "--time-limit", "60",
-                  "--session", journal.string(), "--out", path.string(), "--digest-every", "0.2"});
+  const test::RunResult live = run_tandem({"interactive", "cluttered-1", "--headless", "--seed",
+                                           "2", "--time-limit", "60", "--session", journal.string(),
+                                           "--out", path.string(), "--digest-every", "0.002"});
   ASSERT_EQ(live.exit_code, 0) << live.out << live.err;
   EXPECT_THAT(live.out, HasSubstr("solved after"));
   EXPECT_THAT(live.out, HasSubstr("tandem replay " + journal.string()));
@@ -376,7 +384,8 @@ TEST(Cli, AnInteractiveSessionReplaysToTheIdenticalTree) {
   EXPECT_EQ(replay.exit_code, 0) << replay.out << replay.err;
   EXPECT_THAT(replay.out, HasSubstr("identical to the session's tree"));
 
-  // A journal cut short by a kill still replays, to its last recorded digest.
+  // A journal cut short by a kill still replays, to its last recorded digest (a digest every 2 ms:
+  // the session solves in a fraction of a second, and the cut needs one before the end).
   std::string text = read(journal);
   const auto end_record = text.rfind("\"end\":");
   ASSERT_NE(end_record, std::string::npos);

@@ -21,6 +21,7 @@ namespace {
 using test::at;
 
 constexpr ValidationSettings kExact{MotionValidation::exact, 0.0};
+constexpr ValidationSettings kDiscrete{MotionValidation::discrete, 0.0};
 
 /// A 0.2 m cube and a 2 cm wall at x = 0 in a room so large that one discrete step (1% of its
 /// diagonal) is 1.4 m: the discrete check of a 1.2 m motion looks at its end only.
@@ -43,7 +44,7 @@ Problem thin_wall_problem() {
 TEST(ExactMotion, CatchesTheThinWallTheDiscreteCheckStepsOver) {
   const Problem p = thin_wall_problem();
   CollisionChecker checker(p.scene);
-  MotionValidator discrete(p.space, checker);
+  MotionValidator discrete(p.space, checker, kDiscrete);
   MotionValidator exact(p.space, checker, kExact);
   ASSERT_EQ(p.space.segment_count(p.start, p.goal), 1u);
   EXPECT_TRUE(discrete.check_motion(p.start, p.goal));
@@ -98,23 +99,8 @@ TEST(ExactMotion, ContactCloserThanTheToleranceIsInvalid) {
   EXPECT_THROW(exact.configure(nan_tolerance), InputError);
 }
 
-/// The problems tandem ships (built-in scenes) and those of ../shared it reads (OMPL.app).
-std::vector<std::string> shipped_problems() {
-  std::vector<std::string> names = {"cluttered-1", "cluttered-2", "maze", "labyrinth-2d"};
-  const auto root = test::shared_dir() / "benchmarks" / "omplapp";
-  if (!std::filesystem::exists(root))
-    return names;
-  for (const char* dim : {"3D", "2D"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(root / dim)) {
-      if (entry.path().extension() == ".cfg")
-        names.push_back(entry.path().string());
-    }
-  }
-  return names;
-}
-
 TEST(ExactMotion, ClearanceBoundsNeverExceedFclsDistanceOnEveryShippedProblem) {
-  for (const std::string& name : shipped_problems()) {
+  for (const std::string& name : test::shipped_problems()) {
     SCOPED_TRACE(name);
     const Problem p = load_problem(name);
     CollisionChecker checker(p.scene);
@@ -151,12 +137,12 @@ bool collides_finely(const SE3Space& space, CollisionChecker& checker, const Con
 }
 
 TEST(ExactMotion, NeverAcceptsAMotionThatAHundredTimesFinerDiscreteCheckRejects) {
-  for (const std::string& name : shipped_problems()) {
+  for (const std::string& name : test::shipped_problems()) {
     SCOPED_TRACE(name);
     const Problem p = load_problem(name);
     CollisionChecker checker(p.scene);
     MotionValidator exact(p.space, checker, kExact);
-    MotionValidator discrete(p.space, checker);
+    MotionValidator discrete(p.space, checker, kDiscrete);
     Rng rng(11);
     int accepted = 0, discrete_only = 0, tried = 0;
     for (int attempts = 0; tried < 300 && attempts < 20000; ++attempts) {
@@ -205,6 +191,23 @@ TEST(ExactMotion, TheLastValidConfigurationIsReachedByAValidMotion) {
       }
     }
     EXPECT_GT(stopped, 5);
+  }
+}
+
+// A short motion needs a small clearance, and the sweep's bound was asked for no more: read as
+// closer than its stopping distance, every short motion was refused (in a live session, the
+// operator's small moves never added a node).
+TEST(ExactMotion, AShortMotionInTheOpenIsValidForTheLastValidSweepToo) {
+  const Problem p = test::wall_with_gap_problem();
+  CollisionChecker checker(p.scene);
+  MotionValidator exact(p.space, checker, kExact);
+  for (const double length : {1e-7, 1e-5, 1e-3, 0.1}) {
+    SCOPED_TRACE(length);
+    const Config a = at(-2, 0), b = at(-2 + length, 0);
+    EXPECT_TRUE(exact.check_motion(a, b));
+    const MotionCheck r = exact.check_motion_last_valid(a, b);
+    EXPECT_TRUE(r.valid);
+    EXPECT_EQ(r.last_valid, b);
   }
 }
 

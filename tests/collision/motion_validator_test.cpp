@@ -26,6 +26,7 @@ TEST(MotionValidator, AcceptsMotionsThroughTheGapAndRejectsThoseThroughTheWall) 
 
 TEST(MotionValidator, ChecksTheEndStateAndEveryStep) {
   Fixture f;
+  f.validator.configure({MotionValidation::discrete});
   const Config a = at(-2, 1), b = at(2, 1);
   const unsigned n = f.problem.space.segment_count(a, b);
   const std::uint64_t before = f.validator.checks();
@@ -38,6 +39,7 @@ TEST(MotionValidator, ChecksTheEndStateAndEveryStep) {
 
 TEST(MotionValidator, ReportsTheLastValidConfiguration) {
   Fixture f;
+  f.validator.configure({MotionValidation::discrete});
   const Config a = at(-2, 1), b = at(2, 1);
   const MotionCheck r = f.validator.check_motion_last_valid(a, b);
   EXPECT_FALSE(r.valid);

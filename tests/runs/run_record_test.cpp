@@ -21,6 +21,7 @@ TEST(RunRecords, RoundTripThroughAJsonLineAndRejectATornOne) {
   r.edges = 98;
   r.nodes_by_source = {2, 50, 48, 0};
   r.tree_digest = "00ff";
+  r.threads = 4;
   const std::string line = format_record(r);
   const auto back = parse_record(line);
   ASSERT_TRUE(back);
@@ -28,6 +29,16 @@ TEST(RunRecords, RoundTripThroughAJsonLineAndRejectATornOne) {
   EXPECT_EQ(back->key(), "interactive alpha=0.5 #9");
   EXPECT_FALSE(parse_record(line.substr(0, line.size() / 2)));
   EXPECT_FALSE(parse_record("{}"));
+}
+
+TEST(RunRecords, ARecordFromBeforeThreadsReadsAsOneThread) {
+  RunRecord r;
+  r.threads = 3;
+  nlohmann::json j = record_json(r);
+  j.erase("threads");
+  const auto back = parse_record(j.dump());
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->threads, 1u);
 }
 
 }  // namespace

@@ -85,6 +85,20 @@ bool have_shared_data() {
   return std::filesystem::exists(shared_dir() / "benchmarks" / "omplapp" / "3D" / "Easy.cfg");
 }
 
+std::vector<std::string> shipped_problems() {
+  std::vector<std::string> names = {"cluttered-1", "cluttered-2", "maze", "labyrinth-2d"};
+  const auto root = shared_dir() / "benchmarks" / "omplapp";
+  if (!std::filesystem::exists(root))
+    return names;
+  for (const char* dim : {"3D", "2D"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(root / dim)) {
+      if (entry.path().extension() == ".cfg")
+        names.push_back(entry.path().string());
+    }
+  }
+  return names;
+}
+
 RunResult run_tandem(const std::vector<std::string>& args) {
   TempDir dir;
   const std::string out_file = (dir.path() / "out").string();

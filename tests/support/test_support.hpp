@@ -54,6 +54,9 @@ class TempDir {
 /// The shared folder (../shared) if present; tests that need it GTEST_SKIP() otherwise.
 std::filesystem::path shared_dir();
 bool have_shared_data();
+/// The problems tandem ships (the built-in scenes), then the OMPL.app problems of ../shared (3D,
+/// then 2D) when it is present.
+std::vector<std::string> shipped_problems();
 #define TANDEM_REQUIRE_SHARED_DATA()                                                             \
   do {                                                                                           \
     if (!::tandem::test::have_shared_data())                                                     \

@@ -13,6 +13,8 @@
 #include <limits>
 #include <vector>
 
+#include "tandem/collision/distance_grid.hpp"
+#include "tandem/collision/sphere_tree.hpp"
 #include "tandem/core/error.hpp"
 
 namespace tandem {
@@ -137,10 +139,67 @@ double part_radius(const Geometry& g, const Geom& geom, const Eigen::Isometry3d&
   return r;
 }
 
+/// The triangles of a mesh part posed at X (or, for a primitive, its box) for the pre-filter.
+void add_prefilter_shape(const FclPart& part, const Eigen::Isometry3d& X,
+                         std::vector<DistanceGrid::Triangle>& triangles,
+                         std::vector<DistanceGrid::Box>& solids) {
+  if (!part.is_mesh) {
+    const Box3 box = local_box(*part.geometry).transformed(X);
+    solids.push_back({box.centre - box.half, box.centre + box.half});
+    return;
+  }
+  const auto& model = static_cast<const fcl::BVHModel<fcl::OBBRSSd>&>(*part.geometry);
+  for (int i = 0; i < model.num_tris; ++i) {
+    const fcl::Triangle& t = model.tri_indices[i];
+    triangles.push_back(
+        {X * model.vertices[t[0]], X * model.vertices[t[1]], X * model.vertices[t[2]]});
+  }
+}
+
+/// The most inner spheres a pre-filter query opens before it leaves the query to FCL.
+constexpr int kPrefilterBudget = 64;
+
+/// The distance grid of the obstacles and the sphere tree of the object.
+struct Prefilter {
+  Bounds bounds;
+  double spacing;
+  DistanceGrid grid;
+  SphereTree object;
+};
+
+std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const Bounds& bounds,
+                                                double spacing) {
+  std::vector<DistanceGrid::Triangle> triangles;
+  std::vector<DistanceGrid::Box> solids;
+  for (const FclPart& part : g.obstacles)
+    add_prefilter_shape(part, part.pose, triangles, solids);
+  // Every point of the object stays within its radius of the reference point.
+  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(g.object_radius);
+  DistanceGrid grid({bounds.min - grow, bounds.max + grow}, spacing, triangles, solids);
+  triangles.clear();
+  solids.clear();
+  for (const FclPart& part : g.object)
+    add_prefilter_shape(part, part.pose, triangles, solids);
+  SphereTree object(triangles, solids, grid.spacing());
+  return std::make_shared<const Prefilter>(
+      Prefilter{bounds, spacing, std::move(grid), std::move(object)});
+}
+
+/// The pre-filter's bound on the object's clearance at X_WO up to cap, or a value below `enough`
+/// when it cannot show `enough`.
+double prefilter_clearance(const Prefilter& p, const Eigen::Isometry3d& X_WO, double enough,
+                           double cap) {
+  return p.object.clearance_at(p.grid, X_WO, enough, cap, kPrefilterBudget);
+}
+
 }  // namespace
 
 struct CollisionChecker::Impl {
   std::shared_ptr<const SharedGeometry> geometry;
+  /// The pre-filter last built, kept while it is off (drop_distance_grid) so that switching it
+  /// back on costs nothing; `active` is it when on, null when off.
+  std::shared_ptr<const Prefilter> built;
+  const Prefilter* active = nullptr;
   CollisionCounters counters;
   fcl::CollisionRequestd collision_request;
   fcl::DistanceRequestd distance_request;
@@ -193,13 +252,43 @@ CollisionChecker::CollisionChecker(CollisionChecker&&) noexcept = default;
 CollisionChecker& CollisionChecker::operator=(CollisionChecker&&) noexcept = default;
 
 CollisionChecker CollisionChecker::clone() const {
-  return CollisionChecker(std::make_unique<Impl>(impl_->geometry));
+  auto impl = std::make_unique<Impl>(impl_->geometry);
+  impl->built = impl_->built;
+  impl->active = impl_->active;
+  return CollisionChecker(std::move(impl));
+}
+
+void CollisionChecker::use_distance_grid(const Bounds& bounds, double spacing) {
+  if (!bounds.is_valid() || !(spacing > 0.0) || !std::isfinite(spacing))
+    throw InputError("distance grid", "needs valid bounds and a positive spacing");
+  const auto& p = impl_->built;
+  if (p == nullptr || p->spacing != spacing || p->bounds.min != bounds.min ||
+      p->bounds.max != bounds.max) {
+    impl_->built = make_prefilter(*impl_->geometry, bounds, spacing);
+  }
+  impl_->active = impl_->built.get();
+}
+
+void CollisionChecker::drop_distance_grid() {
+  impl_->active = nullptr;
+}
+
+bool CollisionChecker::has_distance_grid() const {
+  return impl_->active != nullptr;
 }
 
 bool CollisionChecker::is_collision_free(const Config& q) {
   Impl& m = *impl_;
   ++m.counters.state_checks;
   const Eigen::Isometry3d X_WO = q.pose();
+  if (m.active != nullptr) {
+    // Any positive bound shows that nothing touches.
+    const double positive = 1e-6 * m.active->grid.spacing();
+    if (prefilter_clearance(*m.active, X_WO, positive, positive) >= positive) {
+      ++m.counters.prefilter_answers;
+      return true;
+    }
+  }
   for (const auto& part : m.geometry->object) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
     const Box3 box = part.box.transformed(X_WP);
@@ -277,12 +366,20 @@ NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
   return best;
 }
 
-double CollisionChecker::clearance_bound(const Config& q, double cap) {
+double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl_cap) {
   Impl& m = *impl_;
   ++m.counters.clearance_queries;
   constexpr double kGrow = 1.0 + kClearanceRelativeError;
-  double best = cap;
   const Eigen::Isometry3d X_WO = q.pose();
+  fcl_cap = std::min(fcl_cap, cap);
+  if (m.active != nullptr) {
+    const double c = prefilter_clearance(*m.active, X_WO, fcl_cap, cap);
+    if (c >= fcl_cap) {
+      ++m.counters.prefilter_answers;
+      return c;
+    }
+  }
+  double best = fcl_cap;
   for (const auto& part : m.geometry->object) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
     const Box3 box = part.box.transformed(X_WP);

@@ -3,8 +3,8 @@
 // tandem's own interface: no FCL type appears here).
 //
 // Threading: one CollisionChecker per thread. clone() gives another thread its own checker; clones
-// share the immutable geometry (BVH models, primitives) and nothing else, so they can run
-// concurrently.
+// share the immutable geometry (BVH models, primitives, the distance grid) and nothing else, so
+// they can run concurrently.
 //
 // Conventions: configurations are poses of the object frame in the world frame (X_WO); all points
 // are in the world frame; distances are in the scene's length unit and never negative. FCL's mesh
@@ -17,6 +17,7 @@
 #include <string>
 
 #include "tandem/scene/scene.hpp"
+#include "tandem/space/bounds.hpp"
 #include "tandem/space/config.hpp"
 
 namespace tandem {
@@ -27,6 +28,7 @@ struct CollisionCounters {
   std::uint64_t clearance_queries = 0;  ///< clearance_bound() calls
   std::uint64_t fcl_errors =
       0;  ///< exceptions thrown by FCL and caught here (counted as collision)
+  std::uint64_t prefilter_answers = 0;  ///< queries the distance grid answered without FCL
 };
 
 struct NearestObstacle {
@@ -62,7 +64,10 @@ class CollisionChecker {
   /// nearest_obstacle(): FCL prunes with a relative error (kClearanceRelativeError) and every BV
   /// pair farther than the cap, and boxes prune whole pairs of parts. The continuous motion
   /// validation certifies motions with it.
-  double clearance_bound(const Config& q, double cap);
+  double clearance_bound(const Config& q, double cap) { return clearance_bound(q, cap, cap); }
+  /// The same, with FCL asked only up to fcl_cap (<= cap): the distance grid, when built, answers
+  /// up to cap in a few memory reads; FCL's work grows with its cap.
+  double clearance_bound(const Config& q, double cap, double fcl_cap);
 
   /// FCL's relative error in clearance_bound(): true distance >= returned / (1 + error).
   static constexpr double kClearanceRelativeError = 0.25;
@@ -71,6 +76,18 @@ class CollisionChecker {
   /// any point of the object: no point moves more than |dt| + angle * radius in a motion that
   /// translates by dt and turns by angle about a fixed axis.
   double object_radius() const;
+
+  /// Builds the pre-filter (distance_grid.hpp, sphere_tree.hpp) for an object whose reference
+  /// point stays inside `bounds`, with cells of `spacing`: from then on is_collision_free() and
+  /// clearance_bound() consult it first and pass to FCL only what it cannot certify. It only
+  /// certifies "free" or "at least this far", never a collision, so no answer changes but the
+  /// clearance bounds (which may come out larger, never above the true distance). Clones made
+  /// afterwards share it. Builds nothing when the last grid built has the same bounds and
+  /// spacing (also after drop_distance_grid()).
+  void use_distance_grid(const Bounds& bounds, double spacing);
+  /// Back to FCL alone (for comparisons); the grid is kept for a later use_distance_grid().
+  void drop_distance_grid();
+  bool has_distance_grid() const;
 
   std::size_t obstacle_count() const;
   const std::string& obstacle_name(std::size_t index) const;

@@ -41,10 +41,14 @@ std::string_view to_string(MotionValidation v);
 std::optional<MotionValidation> parse_motion_validation(std::string_view name);
 
 struct ValidationSettings {
-  MotionValidation mode = MotionValidation::discrete;
-  /// Closer than this to an obstacle counts as contact (exact mode); 0: 1e-5 x the bounds'
+  MotionValidation mode = MotionValidation::exact;
+  /// Closer than this to an obstacle counts as contact (exact mode); 0: 1e-6 x the bounds'
   /// diagonal.
   double tolerance = 0.0;
+  /// The checker's distance-grid pre-filter (CollisionChecker::use_distance_grid), built with
+  /// cells of half a resolution step; off: FCL alone. The grid belongs to the checker, so
+  /// validators that share a checker share it too.
+  bool distance_grid = true;
 };
 
 struct MotionCheck {
@@ -114,18 +118,21 @@ class MotionValidator {
   template <class Query>
   auto counted(Query query);
   bool collision_free(const Config& q);
-  /// checker_.clearance_bound(q, cap), the cap limited to one resolution step.
+  /// checker_.clearance_bound(q, cap), FCL's cap limited to one resolution step.
   double clearance(const Config& q, double cap);
   /// L: no point of the object moves more than L |s - s'| between fractions s and s' of a -> b.
   double displacement_rate(const Config& a, const Config& b) const;
   bool check_motion_discrete(const Config& a, const Config& b);
+  /// Whether b or one of a few of the motion's steps from a to b (kCoarseStates of them at most,
+  /// in bisection order) collides: yes/no queries; false says nothing of the rest of the motion.
+  bool collides_coarsely(const Config& a, const Config& b);
   bool check_motion_exact(const Config& a, const Config& b);
   MotionCheck last_valid_discrete(const Config& a, const Config& b);
   MotionCheck last_valid_exact(const Config& a, const Config& b);
 
   const SE3Space& space_;
   CollisionChecker& checker_;
-  MotionValidation mode_ = MotionValidation::discrete;
+  MotionValidation mode_ = MotionValidation::exact;
   double tolerance_ = 0.0;
   std::uint64_t checks_ = 0;
   bool profiling_ = false;

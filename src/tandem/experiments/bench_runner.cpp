@@ -266,6 +266,9 @@ class JobQueue {
     const RunConfig& config = experiment_.configs[job.config];
     const double time_limit = experiment_.time_limit;
     RunSpec spec = config.spec(job.seed, time_limit, problem_.hints);
+    // Runs are already --jobs at a time: one thread each unless the experiment says otherwise.
+    if (spec.settings.threads == 0)
+      spec.settings.threads = 1;
     // The planner stops on Ctrl-C; a failure of another worker stops this one between runs.
     spec.stop = options_.stop != nullptr ? options_.stop : &stop_all_;
     const RunOutcome outcome = execute_run(problem_, spec, checker);

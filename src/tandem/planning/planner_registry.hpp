@@ -16,6 +16,10 @@
 
 namespace tandem {
 
+/// The mixed portfolio: on several threads, RRT-Connect on even ones and goal-biased RRT on odd
+/// ones (runs/portfolio.hpp); on one thread, RRT-Connect.
+inline constexpr std::string_view kMixedPortfolio = "birrt+rrt";
+
 /// What a planner is made from.
 struct PlannerContext {
   MotionValidator& validator;

@@ -59,9 +59,31 @@ ParamTable<S> make_table() {
        .unit = "m",
        .min = 0.0,
        .max = inf,
-       .help = "Exact validation: closer than this to an obstacle counts as contact (0: 1e-5 x "
+       .help = "Exact validation: closer than this to an obstacle counts as contact (0: 1e-6 x "
                "the bounds' diagonal)"},
       &S::tolerance));
+  t.push_back(choice_param<S>(
+      {.name = "distance_grid",
+       .label = "distance grid",
+       .choices = {"on", "off"},
+       .help = "Answer collision and clearance queries from a distance grid of the obstacles "
+               "where it can certify them (free, or at least this far), FCL the rest; off: FCL "
+               "alone. Same answers either way"},
+      &S::distance_grid, [](bool on) { return std::string(on ? "on" : "off"); },
+      [](std::string_view v) {
+        return v == "on"    ? std::optional<bool>(true)
+               : v == "off" ? std::optional<bool>(false)
+                            : std::nullopt;
+      }));
+  t.push_back(integer_param<S>(
+      {.name = "threads",
+       .label = "threads",
+       .min = 0.0,
+       .max = 256.0,
+       .help = "Independent searches run at once, each on its own thread, seeded from the run's "
+               "seed; the one that solves in the fewest iterations wins (0: one per core)",
+       .group = "portfolio"},
+      &S::threads));
   return t;
 }
 

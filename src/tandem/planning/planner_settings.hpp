@@ -37,10 +37,15 @@ struct PlannerSettings {
   /// "kdtree" or "linear".
   std::string nearest_neighbors = "kdtree";
   /// How motions are checked: the whole continuous motion (exact) or every 1% (discrete, OMPL's).
-  MotionValidation validation = MotionValidation::discrete;
-  /// Closer than this to an obstacle counts as contact (exact validation); 0: 1e-5 x the bounds'
+  MotionValidation validation = MotionValidation::exact;
+  /// Closer than this to an obstacle counts as contact (exact validation); 0: 1e-6 x the bounds'
   /// diagonal.
   double tolerance = 0.0;
+  /// The distance-grid pre-filter of collision queries (ValidationSettings::distance_grid).
+  bool distance_grid = true;
+  /// Independent searches run at once by the planners that plan alone (runs/portfolio.hpp); 0:
+  /// one per core.
+  unsigned threads = 0;
   /// Measure the time spent in collision checks and nearest-neighbour queries.
   bool profile = false;
   /// The interactive planners' tunables (interaction_parameters()).
@@ -49,11 +54,11 @@ struct PlannerSettings {
 
 /// How a planner with these settings checks motions (its validator is configured so).
 inline ValidationSettings validation_settings(const PlannerSettings& s) {
-  return {s.validation, s.tolerance};
+  return {s.validation, s.tolerance, s.distance_grid};
 }
 
 /// The declarations of PlannerSettings' tunable fields (range, goal_bias, extend,
-/// nearest_neighbors, validation, tolerance); the seed is the run's, not a tunable.
+/// nearest_neighbors, validation, tolerance, distance_grid, threads); the seed is the run's, not a tunable.
 const ParamTable<PlannerSettings>& planner_parameters();
 
 }  // namespace tandem

@@ -6,6 +6,7 @@
 #include "tandem/operators/guide_follower.hpp"
 #include "tandem/operators/trace.hpp"
 #include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/portfolio.hpp"
 
 namespace tandem {
 
@@ -45,15 +46,33 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec) {
   return execute_run(problem, spec, checker);
 }
 
+RunOutcome planner_outcome(const Problem& problem, const Planner& planner, PlannerStatus status) {
+  RunOutcome outcome;
+  outcome.status = status;
+  outcome.stats = planner.stats();
+  outcome.tree_digest = tree_digest(planner.trees());
+  outcome.range = planner.range();
+  if (status == PlannerStatus::solved) {
+    outcome.path = planner.solution();
+    outcome.path_length = path_length(problem.space, outcome.path);
+  }
+  return outcome;
+}
+
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker) {
+  if (!uses_operator(spec)) {
+    const unsigned threads = resolve_threads(spec);
+    if (threads > 1)
+      return run_portfolio(problem, spec, checker, threads);
+  }
   MotionValidator validator(problem.space, checker);
 
-  RunOutcome outcome;
   std::unique_ptr<VirtualTimeFeed> feed;
   Interaction interaction;
+  std::string operator_description;
   if (uses_operator(spec)) {
     auto source = make_operator(problem, spec);
-    outcome.operator_description = source->describe();
+    operator_description = source->describe();
     feed = std::make_unique<VirtualTimeFeed>(OperatorModel(checker, std::move(source)),
                                              spec.operator_period);
     interaction.feed = feed.get();
@@ -64,16 +83,10 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
   termination.time_limit_s = spec.time_limit;
   termination.max_iterations = spec.max_iterations;
   termination.stop = spec.stop;
-  outcome.status = planner->solve(termination);
-  outcome.stats = planner->stats();
-  outcome.tree_digest = tree_digest(planner->trees());
+  RunOutcome outcome = planner_outcome(problem, *planner, planner->solve(termination));
+  outcome.operator_description = std::move(operator_description);
   if (feed != nullptr)
     outcome.operator_waits = feed->operator_waits();
-  outcome.range = planner->range();
-  if (outcome.status == PlannerStatus::solved) {
-    outcome.path = planner->solution();
-    outcome.path_length = path_length(problem.space, outcome.path);
-  }
   return outcome;
 }
 

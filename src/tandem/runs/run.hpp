@@ -1,7 +1,9 @@
 #pragma once
-// One planning run (a RunSpec, see run_spec.hpp) carried out: execute_run() builds the collision checker, the operator (a
-// simulated one following the problem's guide, or a recorded trace) and its feed, runs the planner,
-// and returns the outcome. Deterministic for a given spec in virtual time.
+// One planning run (a RunSpec, see run_spec.hpp) carried out: execute_run() builds the collision
+// checker, the operator (a simulated one following the problem's guide, or a recorded trace) and
+// its feed, runs the planner — or, for a planner that plans alone on several threads, a portfolio
+// of them (portfolio.hpp) — and returns the outcome. Deterministic for a given spec (and thread
+// count) in virtual time.
 
 #include <atomic>
 #include <cstdint>
@@ -32,14 +34,22 @@ struct RunOutcome {
   /// tree_digest() of the planner's trees when it stopped: same spec, same digest (for runs that
   /// end by solving or by an iteration limit; a time limit stops at a machine-dependent point).
   std::uint64_t tree_digest = 0;
+  /// Searches run at once (portfolio.hpp); 1 for the planners that take an operator.
+  unsigned threads = 1;
+  /// The portfolio's member whose search this is (0 for one thread; birrt+rrt: odd ones are RRT).
+  unsigned member = 0;
 };
 
 /// Throws InputError for a spec the problem cannot run (a planner that takes an operator on a
 /// problem without a guide, a trace that cannot be read). An invalid start or goal is an outcome
 /// (status invalid_start, invalid_goal), not an error.
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec);
-/// The same with a checker built for the problem's scene (its counters keep counting).
+/// The same with a checker built for the problem's scene (its counters keep counting, but for a
+/// portfolio's, whose members query clones of it).
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChecker& checker);
+
+/// What a planner that stopped with `status` has to show: its statistics, trees and path.
+RunOutcome planner_outcome(const Problem& problem, const Planner& planner, PlannerStatus status);
 
 /// The operator source of a spec: a guide follower or a trace player, on the given clock
 /// (planner iterations for runs in virtual time, seconds for live sessions). Throws InputError for

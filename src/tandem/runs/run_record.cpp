@@ -1,5 +1,8 @@
 #include "tandem/runs/run_record.hpp"
 
+#include <string_view>
+#include <type_traits>
+
 #include "tandem/core/digest.hpp"
 
 namespace tandem {
@@ -29,6 +32,8 @@ RunRecord make_record(const std::string& problem, const std::string& config,
   r.contact_entries = s.contact_entries;
   r.operator_waits = outcome.operator_waits;
   r.tree_digest = format_digest(outcome.tree_digest);
+  r.threads = outcome.threads;
+  r.member = outcome.member;
   return r;
 }
 
@@ -61,6 +66,17 @@ void visit_fields(Record& r, Visit&& field) {
   field("contact_entries", r.contact_entries);
   field("operator_waits", r.operator_waits);
   field("tree_digest", r.tree_digest);
+  field("threads", r.threads);
+  field("member", r.member);
+}
+
+/// A field that records written before it existed lack: operator_waits 0, threads 1, member 0.
+template <class T>
+T missing_value(std::string_view name) {
+  if constexpr (std::is_arithmetic_v<T>)
+    return name == "threads" ? T{1} : T{};
+  else
+    return T{};
 }
 
 std::string source_name(std::size_t k) {
@@ -89,8 +105,9 @@ std::optional<RunRecord> parse_record(const std::string& line) {
     RunRecord r;
     visit_fields(r, [&](const char* name, auto& value) {
       using T = std::decay_t<decltype(value)>;
-      // Records written before operator_waits existed read as 0.
-      value = std::string_view(name) == "operator_waits" ? j.value(name, T{}) : j.at(name).get<T>();
+      const std::string_view n = name;
+      const bool added_later = n == "operator_waits" || n == "threads" || n == "member";
+      value = added_later && !j.contains(name) ? missing_value<T>(n) : j.at(name).get<T>();
     });
     for (std::size_t k = 0; k < kNodeSources; ++k)
       r.nodes_by_source[k] = j.at("nodes_by_source").at(source_name(k)).get<std::size_t>();

@@ -35,6 +35,8 @@ struct RunRecord {
   std::uint64_t contact_entries = 0;
   std::uint64_t operator_waits = 0;  ///< RunOutcome::operator_waits
   std::string tree_digest;           ///< hex of RunOutcome::tree_digest
+  unsigned threads = 1;              ///< RunOutcome::threads
+  unsigned member = 0;               ///< RunOutcome::member
 
   /// Identifies the run within an experiment: configuration and seed.
   std::string key() const { return config + " #" + std::to_string(seed); }

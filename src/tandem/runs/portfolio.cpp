@@ -1,0 +1,182 @@
+#include "tandem/runs/portfolio.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "tandem/core/rng.hpp"
+#include "tandem/core/stopwatch.hpp"
+#include "tandem/planning/planner_registry.hpp"
+
+namespace tandem {
+namespace {
+
+/// Iterations a member runs between two looks at the race: small against a solve's thousands,
+/// large against the look's cost (a lock).
+constexpr std::uint64_t kChunk = 16;
+
+/// The best solved member so far, and whether the portfolio was abandoned (an error).
+///
+/// A member's work is its collision checks, deterministic for its seed like its iterations, and
+/// a fair measure across different planners (the checks are most of a search's time; an
+/// iteration of RRT-Connect does more of them than one of RRT).
+///
+/// Threading: every member thread calls may_win() and offer(); the mutex guards all of it.
+class Race {
+ public:
+  /// Whether member `index`, having done `work`, may still win: a solve with work w wins if w is
+  /// below the best solve's, or equal to it with a lower index. Work never decreases.
+  bool may_win(std::uint64_t work, unsigned index) const {
+    const std::lock_guard lock(mutex_);
+    return !abandoned_ && beats_best(work, index);
+  }
+
+  void offer(std::uint64_t work, unsigned index) {
+    const std::lock_guard lock(mutex_);
+    if (beats_best(work, index)) {
+      solved_ = true;
+      best_work_ = work;
+      best_index_ = index;
+    }
+  }
+
+  void abandon() {
+    const std::lock_guard lock(mutex_);
+    abandoned_ = true;
+  }
+
+  /// The winner's index, once every member has stopped; nullopt if none solved.
+  std::optional<unsigned> winner() const {
+    const std::lock_guard lock(mutex_);
+    return solved_ ? std::optional<unsigned>(best_index_) : std::nullopt;
+  }
+
+ private:
+  /// With the mutex held.
+  bool beats_best(std::uint64_t work, unsigned index) const {
+    return !solved_ || work < best_work_ || (work == best_work_ && index < best_index_);
+  }
+
+  mutable std::mutex mutex_;
+  bool solved_ = false;
+  bool abandoned_ = false;
+  std::uint64_t best_work_ = 0;
+  unsigned best_index_ = 0;
+};
+
+/// One search of the portfolio, with everything it owns.
+struct Member {
+  Member(const Problem& problem, const RunSpec& spec, const CollisionChecker& shared,
+         unsigned index)
+      : checker(shared.clone()), validator(problem.space, checker) {
+    PlannerSettings settings = spec.settings;
+    settings.seed = member_seed(spec.settings.seed, index);
+    planner = make_planner(member_planner(spec.mode, index), validator, problem.start, problem.goal,
+                           settings);
+  }
+
+  CollisionChecker checker;
+  MotionValidator validator;
+  std::unique_ptr<Planner> planner;
+  PlannerStatus status = PlannerStatus::running;
+};
+
+/// Runs a member in chunks until it solves, stops for its own reasons (time limit, interrupt,
+/// iteration limit, invalid start or goal), or can no longer win.
+void run_member(Member& m, unsigned index, const RunSpec& spec, Race& race) {
+  Termination termination;
+  termination.time_limit_s = spec.time_limit;
+  termination.stop = spec.stop;
+  for (;;) {
+    const PlannerStats& stats = m.planner->stats();
+    if (stats.iterations >= spec.max_iterations || !race.may_win(stats.collision_checks, index)) {
+      m.status = PlannerStatus::iteration_limit;
+      return;
+    }
+    termination.max_iterations = std::min(kChunk, spec.max_iterations - stats.iterations);
+    const PlannerStatus status = m.planner->solve(termination);
+    if (status == PlannerStatus::solved)
+      race.offer(m.planner->stats().collision_checks, index);
+    if (status != PlannerStatus::iteration_limit) {
+      m.status = status;
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+std::uint64_t member_seed(std::uint64_t seed, unsigned index) {
+  if (index == 0)
+    return seed;
+  Rng rng(seed);
+  std::uint64_t s = seed;
+  for (unsigned i = 0; i < index; ++i)
+    s = rng.split();
+  return s;
+}
+
+std::string_view member_planner(std::string_view mode, unsigned index) {
+  if (mode == kMixedPortfolio)
+    return index % 2 == 0 ? "birrt" : "rrt";
+  return mode;
+}
+
+unsigned resolve_threads(const RunSpec& spec) {
+  if (spec.settings.threads != 0)
+    return spec.settings.threads;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionChecker& checker,
+                         unsigned threads) {
+  // The distance grid once, before the clones that share it (not timed, as for one thread).
+  MotionValidator(problem.space, checker, validation_settings(spec.settings));
+  const Stopwatch wall;
+  std::vector<std::unique_ptr<Member>> members;
+  for (unsigned i = 0; i < threads; ++i)
+    members.push_back(std::make_unique<Member>(problem, spec, checker, i));
+
+  Race race;
+  std::mutex error_mutex;
+  std::exception_ptr error;
+  std::vector<std::thread> pool;
+  for (unsigned i = 0; i < threads; ++i) {
+    pool.emplace_back([&, i] {
+      try {
+        run_member(*members[i], i, spec, race);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error)
+          error = std::current_exception();
+        race.abandon();
+      }
+    });
+  }
+  for (auto& t : pool)
+    t.join();
+  if (error)
+    std::rethrow_exception(error);
+
+  const unsigned shown = race.winner().value_or(0);
+  const Member& m = *members[shown];
+  RunOutcome outcome = planner_outcome(problem, *m.planner, m.status);
+  outcome.stats.collision_checks = 0;
+  outcome.stats.collision_time_s = 0.0;
+  outcome.stats.nearest_time_s = 0.0;
+  for (const auto& member : members) {
+    const PlannerStats& s = member->planner->stats();
+    outcome.stats.collision_checks += s.collision_checks;
+    outcome.stats.collision_time_s += s.collision_time_s;
+    outcome.stats.nearest_time_s += s.nearest_time_s;
+  }
+  outcome.stats.time_s = wall.seconds();
+  outcome.threads = threads;
+  outcome.member = shown;
+  return outcome;
+}
+
+}  // namespace tandem

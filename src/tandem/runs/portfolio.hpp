@@ -1,0 +1,46 @@
+#pragma once
+// Every core on one problem: a portfolio of independent searches (Gomes & Selman, "Algorithm
+// portfolios", AI 2001). A sampling planner's run time is heavy-tailed — a few seeds take many
+// times the median — so the first of k independent runs to finish is far sooner than one run,
+// more than k times sooner in the tail. Member i runs the spec's planner (for "birrt+rrt":
+// RRT-Connect on even members, goal-biased RRT on odd ones, which are fast where the other is
+// slow) with seed member_seed(seed, i), on its own thread, with its own clone of the collision
+// checker.
+//
+// Deterministic: the winner is the member that solves with the least work (its collision checks,
+// as deterministic as its iterations), the lower index on a tie — not the first to finish in time,
+// which depends on the machine. A member stops as soon as it can no longer win (its work passed
+// the best solve's), so the result for a given seed and thread count is the same on any machine
+// and under any load, unless the time limit ends the run first (as for one thread).
+
+#include <cstdint>
+#include <string_view>
+
+#include "tandem/collision/collision_checker.hpp"
+#include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/run.hpp"
+
+namespace tandem {
+
+/// The planner member `index` of a portfolio of `mode` runs: `mode` itself, but for
+/// kMixedPortfolio.
+std::string_view member_planner(std::string_view mode, unsigned index);
+
+/// The seed of member `index`: the run's seed for member 0 (one thread is the plain run), then
+/// the run's seed generator's successive outputs.
+std::uint64_t member_seed(std::uint64_t seed, unsigned index);
+
+/// The thread count a spec asks for: settings.threads, 0 meaning one per core.
+unsigned resolve_threads(const RunSpec& spec);
+
+/// Runs spec (a planner that plans alone) as `threads` members and returns the winner's outcome:
+/// its status, path, trees (tree_digest), statistics and index (member), but for collision_checks,
+/// collision_time_s and nearest_time_s, which count every member's work, and time_s, the
+/// portfolio's wall time.
+/// Without a winner: member 0's outcome (timeout, iteration_limit, interrupted, invalid start or
+/// goal), with the same totals. The checker is cloned for the members (they share its geometry
+/// and distance grid); its own counters do not count their queries.
+RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionChecker& checker,
+                         unsigned threads);
+
+}  // namespace tandem

@@ -1,0 +1,152 @@
+// The portfolio (runs/portfolio.hpp): its winner is the member that solves with the fewest
+// collision checks, whatever the threads' timing, so a run is reproducible from its seed and
+// thread count.
+
+#include "tandem/runs/portfolio.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <limits>
+#include <set>
+
+#include "support/problems.hpp"
+#include "tandem/runs/run_spec.hpp"
+
+namespace tandem {
+namespace {
+
+RunSpec birrt_spec(std::uint64_t seed, unsigned threads, std::string_view mode = "birrt") {
+  RunSpec spec = default_spec(mode, {});
+  spec.mode = mode;
+  spec.settings.seed = seed;
+  spec.settings.threads = threads;
+  spec.time_limit = 1e9;
+  return spec;
+}
+
+/// Member i alone: the plain run of its planner with its seed.
+RunOutcome alone(const Problem& problem, std::uint64_t seed, unsigned member,
+                 std::string_view mode = "birrt") {
+  return execute_run(problem,
+                     birrt_spec(member_seed(seed, member), 1, member_planner(mode, member)));
+}
+
+TEST(Portfolio, MemberZeroHasTheRunsSeedAndTheOthersDifferentOnes) {
+  EXPECT_EQ(member_seed(42, 0), 42u);
+  std::set<std::uint64_t> seeds;
+  for (unsigned i = 0; i < 8; ++i)
+    seeds.insert(member_seed(42, i));
+  EXPECT_EQ(seeds.size(), 8u);
+  EXPECT_EQ(member_seed(42, 5), member_seed(42, 5));
+}
+
+TEST(Portfolio, OneMemberIsThePlainRun) {
+  const Problem problem = test::detour_problem();
+  CollisionChecker checker(problem.scene);
+  const RunOutcome plain = execute_run(problem, birrt_spec(7, 1));
+  const RunOutcome one = run_portfolio(problem, birrt_spec(7, 1), checker, 1);
+  ASSERT_EQ(plain.status, PlannerStatus::solved);
+  EXPECT_EQ(one.status, PlannerStatus::solved);
+  EXPECT_EQ(one.stats.iterations, plain.stats.iterations);
+  EXPECT_EQ(one.stats.collision_checks, plain.stats.collision_checks);
+  EXPECT_EQ(one.tree_digest, plain.tree_digest);
+}
+
+/// For each seed: the member that solves with the fewest checks, run alone, is the portfolio's
+/// outcome, every time (the threads' timing differs from run to run, the winner does not).
+void expect_the_least_work_wins(std::string_view mode, std::initializer_list<std::uint64_t> seeds,
+                                std::set<unsigned>& winners) {
+  const Problem problem = test::detour_problem();
+  constexpr unsigned kThreads = 4;
+  for (std::uint64_t seed : seeds) {
+    SCOPED_TRACE(std::string(mode) + ", seed " + std::to_string(seed));
+    std::uint64_t least = std::numeric_limits<std::uint64_t>::max();
+    RunOutcome best;
+    unsigned best_index = 0;
+    for (unsigned i = 0; i < kThreads; ++i) {
+      const RunOutcome o = alone(problem, seed, i, mode);
+      ASSERT_EQ(o.status, PlannerStatus::solved);
+      if (o.stats.collision_checks < least) {
+        least = o.stats.collision_checks;
+        best = o;
+        best_index = i;
+      }
+    }
+    winners.insert(best_index);
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const RunOutcome o = execute_run(problem, birrt_spec(seed, kThreads, mode));
+      EXPECT_EQ(o.status, PlannerStatus::solved);
+      EXPECT_EQ(o.threads, kThreads);
+      EXPECT_EQ(o.member, best_index);
+      EXPECT_EQ(o.stats.iterations, best.stats.iterations);
+      EXPECT_EQ(o.tree_digest, best.tree_digest);
+      ASSERT_FALSE(o.path.empty());
+      EXPECT_EQ(o.path.front(), problem.start);
+      EXPECT_EQ(o.path.back(), problem.goal);
+    }
+  }
+}
+
+TEST(Portfolio, TheWinnerIsTheMemberThatSolvesWithTheFewestChecks) {
+  std::set<unsigned> winners;
+  expect_the_least_work_wins("birrt", {1, 2, 3}, winners);
+  // The seeds are such that the winner is not always the same member.
+  EXPECT_GT(winners.size(), 1u);
+}
+
+TEST(Portfolio, TheMixedPortfolioRunsRrtConnectAndRrtOnAlternateMembers) {
+  EXPECT_EQ(member_planner(kMixedPortfolio, 0), "birrt");
+  EXPECT_EQ(member_planner(kMixedPortfolio, 1), "rrt");
+  EXPECT_EQ(member_planner(kMixedPortfolio, 2), "birrt");
+  EXPECT_EQ(member_planner("rrt", 0), "rrt");
+  std::set<unsigned> winners;
+  expect_the_least_work_wins(kMixedPortfolio, {1, 2, 5}, winners);
+  bool rrt_won = false, birrt_won = false;
+  for (unsigned w : winners)
+    (w % 2 == 0 ? birrt_won : rrt_won) = true;
+  EXPECT_TRUE(rrt_won && birrt_won) << "the seeds are such that each kind of member wins once";
+  // One thread: RRT-Connect, exactly.
+  const Problem problem = test::detour_problem();
+  EXPECT_EQ(execute_run(problem, birrt_spec(5, 1, kMixedPortfolio)).tree_digest,
+            execute_run(problem, birrt_spec(5, 1)).tree_digest);
+}
+
+TEST(Portfolio, CountsEveryMembersCollisionChecks) {
+  const Problem problem = test::detour_problem();
+  const RunOutcome four = execute_run(problem, birrt_spec(3, 4));
+  ASSERT_EQ(four.status, PlannerStatus::solved);
+  std::uint64_t winners = 0;
+  for (unsigned i = 0; i < 4; ++i) {
+    const RunOutcome o = alone(problem, 3, i);
+    if (o.tree_digest == four.tree_digest)
+      winners = o.stats.collision_checks;
+  }
+  ASSERT_GT(winners, 0u);
+  // The winner's own checks, and the other three's: each checked the start and the goal at least.
+  EXPECT_GE(four.stats.collision_checks, winners + 3u * 2u);
+}
+
+TEST(Portfolio, WithoutASolutionShowsMemberZerosStatus) {
+  const Problem closed = test::closed_problem();
+  RunSpec spec = birrt_spec(1, 3);
+  spec.max_iterations = 300;
+  const RunOutcome o = execute_run(closed, spec);
+  EXPECT_EQ(o.status, PlannerStatus::iteration_limit);
+  EXPECT_EQ(o.stats.iterations, 300u);
+  EXPECT_TRUE(o.path.empty());
+
+  std::atomic<bool> stop{true};
+  spec.stop = &stop;
+  EXPECT_EQ(execute_run(closed, spec).status, PlannerStatus::interrupted);
+}
+
+TEST(Portfolio, AnInvalidStartIsTheOutcomeOfEveryMember) {
+  Problem problem = test::detour_problem();
+  problem.start.t = {0.0, -1.8, 0.0};  // inside wall-south
+  const RunOutcome o = execute_run(problem, birrt_spec(1, 2));
+  EXPECT_EQ(o.status, PlannerStatus::invalid_start);
+}
+
+}  // namespace
+}  // namespace tandem
