@@ -1,5 +1,6 @@
 // The distance-grid pre-filter held against FCL: it may leave a query to FCL, never answer one
-// wrongly. On random configurations of every shipped problem, and on a part inside a solid box.
+// wrongly. On random configurations of every shipped problem and a hair either side of contact,
+// and on a part inside a solid box.
 
 #include "tandem/collision/distance_grid.hpp"
 
@@ -70,8 +71,11 @@ TEST(DistanceGrid, NeverDecidesWronglyOnEveryShippedProblem) {
     gridded.use_distance_grid(p.space.bounds(), 0.5 * p.space.translation_step());
     Rng rng(5);
     const double cap = 10.0 * p.space.translation_step();
-    for (int i = 0; i < 400; ++i) {
-      const Config q = p.space.sample_uniform(rng);
+    // Uniform samples, and configurations a hair either side of contact.
+    std::vector<Config> configs = test::near_contact_configs(p, 7, 40);
+    for (int i = 0; i < 400; ++i)
+      configs.push_back(p.space.sample_uniform(rng));
+    for (const Config& q : configs) {
       const NearestObstacle exact = fcl.nearest_obstacle(q);
       const bool free = fcl.is_collision_free(q);
       EXPECT_EQ(gridded.is_collision_free(q), free);
@@ -83,7 +87,7 @@ TEST(DistanceGrid, NeverDecidesWronglyOnEveryShippedProblem) {
         EXPECT_LE(bound, 0.0);
     }
     answered += gridded.counters().prefilter_answers;
-    asked += 2 * 400;
+    asked += 2 * configs.size();
     RecordProperty(name + ": answered by the grid alone",
                    std::to_string(gridded.counters().prefilter_answers));
   }

@@ -9,6 +9,9 @@
 #include <random>
 #include <sstream>
 
+#include "tandem/collision/collision_checker.hpp"
+#include "tandem/core/rng.hpp"
+
 extern char** environ;
 
 namespace tandem::test {
@@ -97,6 +100,32 @@ std::vector<std::string> shipped_problems() {
     }
   }
   return names;
+}
+
+std::vector<Config> near_contact_configs(const Problem& problem, std::uint64_t seed,
+                                         std::size_t pairs) {
+  CollisionChecker checker(problem.scene);
+  Rng rng(seed);
+  std::vector<Config> out;
+  std::vector<Config> free, colliding;
+  for (std::size_t tries = 0;
+       tries < 200 * pairs && std::min(free.size(), colliding.size()) < pairs; ++tries) {
+    const Config q = problem.space.sample_uniform(rng);
+    (checker.is_collision_free(q) ? free : colliding).push_back(q);
+  }
+  for (std::size_t i = 0; i < std::min(free.size(), colliding.size()); ++i) {
+    double lo = 0.0, hi = 1.0;  // free at lo, colliding at hi
+    for (int k = 0; k < 40; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (checker.is_collision_free(problem.space.interpolate(free[i], colliding[i], mid)))
+        lo = mid;
+      else
+        hi = mid;
+    }
+    out.push_back(problem.space.interpolate(free[i], colliding[i], lo));
+    out.push_back(problem.space.interpolate(free[i], colliding[i], hi));
+  }
+  return out;
 }
 
 RunResult run_tandem(const std::vector<std::string>& args) {

@@ -57,6 +57,13 @@ bool have_shared_data();
 /// The problems tandem ships (the built-in scenes), then the OMPL.app problems of ../shared (3D,
 /// then 2D) when it is present.
 std::vector<std::string> shipped_problems();
+/// Configurations at the boundary of collision, where conservative shortcuts are most likely to be
+/// wrong: for pairs of uniform samples, one free and one colliding, the straight motion between
+/// them bisected 40 times; both ends of the last bisection (one free, one colliding, a hair apart)
+/// are returned. `pairs` such pairs at most (fewer if the problem has no free or no colliding
+/// samples in 200 x pairs tries).
+std::vector<Config> near_contact_configs(const Problem& problem, std::uint64_t seed,
+                                         std::size_t pairs);
 #define TANDEM_REQUIRE_SHARED_DATA()                                                             \
   do {                                                                                           \
     if (!::tandem::test::have_shared_data())                                                     \

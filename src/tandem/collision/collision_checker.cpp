@@ -4,6 +4,7 @@
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
+#include <fcl/math/bv/OBB.h>
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
@@ -46,27 +47,50 @@ void check_positive(double v, const std::string& body, const char* what) {
   }
 }
 
-std::shared_ptr<Geom> make_geometry(const Geometry& g, const std::string& body) {
+/// The FCL models of a part: for a mesh, an OBBRSS tree for distances and an OBB tree for yes/no
+/// collision (faster: moveit2 #2534; measured with tandem-check-costs); for a primitive, one shape.
+struct FclModels {
+  std::shared_ptr<Geom> distance;
+  std::shared_ptr<Geom> collision;
+};
+
+template <class BV>
+std::shared_ptr<Geom> make_bvh(const TriangleMesh& mesh, const std::vector<fcl::Triangle>& tris) {
+  auto model = std::make_shared<fcl::BVHModel<BV>>();
+  model->beginModel(static_cast<int>(tris.size()), static_cast<int>(mesh.vertices.size()));
+  model->addSubModel(mesh.vertices, tris);
+  model->endModel();
+  model->computeLocalAABB();
+  return model;
+}
+
+FclModels make_models(const Geometry& g, const std::string& body) {
   struct Visitor {
     const std::string& body;
-    std::shared_ptr<Geom> operator()(const Box& b) const {
+    std::shared_ptr<Geom> shape(std::shared_ptr<Geom> geom) const {
+      geom->computeLocalAABB();
+      return geom;
+    }
+    FclModels operator()(const Box& b) const {
       for (int i = 0; i < 3; ++i)
         check_positive(b.size[i], body, "box size");
-      return std::make_shared<fcl::Boxd>(b.size);
+      auto geom = shape(std::make_shared<fcl::Boxd>(b.size));
+      return {geom, geom};
     }
-    std::shared_ptr<Geom> operator()(const Sphere& s) const {
+    FclModels operator()(const Sphere& s) const {
       check_positive(s.radius, body, "sphere radius");
-      return std::make_shared<fcl::Sphered>(s.radius);
+      auto geom = shape(std::make_shared<fcl::Sphered>(s.radius));
+      return {geom, geom};
     }
-    std::shared_ptr<Geom> operator()(const Cylinder& c) const {
+    FclModels operator()(const Cylinder& c) const {
       check_positive(c.radius, body, "cylinder radius");
       check_positive(c.length, body, "cylinder length");
-      return std::make_shared<fcl::Cylinderd>(c.radius, c.length);
+      auto geom = shape(std::make_shared<fcl::Cylinderd>(c.radius, c.length));
+      return {geom, geom};
     }
-    std::shared_ptr<Geom> operator()(const MeshShape& m) const {
+    FclModels operator()(const MeshShape& m) const {
       if (!m.mesh || m.mesh->triangles.empty())
         throw InputError(m.source, "the mesh has no triangles");
-      auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
       std::vector<fcl::Triangle> tris;
       tris.reserve(m.mesh->triangles.size());
       const std::size_t n = m.mesh->vertices.size();
@@ -76,16 +100,10 @@ std::shared_ptr<Geom> make_geometry(const Geometry& g, const std::string& body) 
           throw InputError(m.source, "triangle index out of range");
         tris.emplace_back(t[0], t[1], t[2]);
       }
-      model->beginModel(static_cast<int>(tris.size()), static_cast<int>(n));
-      model->addSubModel(m.mesh->vertices, tris);
-      model->endModel();
-      model->computeLocalAABB();
-      return model;
+      return {make_bvh<fcl::OBBRSSd>(*m.mesh, tris), make_bvh<fcl::OBBd>(*m.mesh, tris)};
     }
   };
-  auto geom = std::visit(Visitor{body}, g);
-  geom->computeLocalAABB();
-  return geom;
+  return std::visit(Visitor{body}, g);
 }
 
 bool is_mesh(const Geometry& g) {
@@ -101,8 +119,9 @@ Box3 local_box(const Geom& g) {
 }
 
 struct FclPart {
-  std::shared_ptr<const Geom> geometry;
-  Eigen::Isometry3d pose;  ///< X_BP
+  std::shared_ptr<const Geom> geometry;            ///< for distances (OBBRSS for a mesh)
+  std::shared_ptr<const Geom> collision_geometry;  ///< for yes/no collision (OBB for a mesh)
+  Eigen::Isometry3d pose;                          ///< X_BP
   bool pose_is_identity;
   bool is_mesh;
   bool is_sphere;
@@ -224,21 +243,23 @@ struct CollisionChecker::Impl {
 CollisionChecker::CollisionChecker(const Scene& scene) {
   auto g = std::make_shared<SharedGeometry>();
   for (const auto& part : scene.object.parts) {
-    auto geom = make_geometry(part.geometry, "object '" + scene.object.name + "'");
+    const FclModels models = make_models(part.geometry, "object '" + scene.object.name + "'");
     const bool identity = part.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
-    g->object.push_back({geom, part.pose, identity, is_mesh(part.geometry),
-                         is_sphere(part.geometry), local_box(*geom), 0});
-    g->object_radius = std::max(g->object_radius, part_radius(part.geometry, *geom, part.pose));
+    g->object.push_back({models.distance, models.collision, part.pose, identity,
+                         is_mesh(part.geometry), is_sphere(part.geometry),
+                         local_box(*models.distance), 0});
+    g->object_radius =
+        std::max(g->object_radius, part_radius(part.geometry, *models.distance, part.pose));
   }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
     const Body& body = scene.obstacles[i];
     g->obstacle_names.push_back(body.name);
     for (const auto& part : body.parts) {
-      auto geom = make_geometry(part.geometry, "obstacle '" + body.name + "'");
+      const FclModels models = make_models(part.geometry, "obstacle '" + body.name + "'");
       const bool identity = part.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
-      g->obstacles.push_back({geom, part.pose, identity, is_mesh(part.geometry),
-                              is_sphere(part.geometry), local_box(*geom).transformed(part.pose),
-                              i});
+      g->obstacles.push_back({models.distance, models.collision, part.pose, identity,
+                              is_mesh(part.geometry), is_sphere(part.geometry),
+                              local_box(*models.distance).transformed(part.pose), i});
     }
   }
   if (g->object.empty())
@@ -297,8 +318,8 @@ bool CollisionChecker::is_collision_free(const Config& q) {
         continue;
       fcl::CollisionResultd result;
       try {
-        if (fcl::collide(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
-                         m.collision_request, result) > 0) {
+        if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
+                         obstacle.pose, m.collision_request, result) > 0) {
           return false;
         }
       } catch (const std::exception&) {
@@ -325,8 +346,8 @@ NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
         continue;
       try {
         fcl::CollisionResultd hit;
-        if (fcl::collide(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
-                         m.collision_request, hit) > 0) {
+        if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
+                         obstacle.pose, m.collision_request, hit) > 0) {
           best =
               NearestObstacle{true, 0.0, X_WP.translation(), X_WP.translation(), obstacle.obstacle};
           return best;

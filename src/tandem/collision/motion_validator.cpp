@@ -57,6 +57,7 @@ void MotionValidator::configure(const ValidationSettings& settings) {
   if (!(settings.tolerance >= 0.0) || !std::isfinite(settings.tolerance))
     throw InputError("tolerance", "must be a finite number >= 0");
   mode_ = settings.mode;
+  cache_.clear();
   tolerance_ =
       settings.tolerance > 0.0 ? settings.tolerance : kToleranceShare * space_.translation_extent();
   if (settings.distance_grid)
@@ -90,7 +91,12 @@ double MotionValidator::clearance(const Config& q, double cap) {
   // is asked for the whole of it.
   cap = std::max(cap, tolerance_);
   const double fcl_cap = std::max(std::min(cap, kCapSteps * space_.translation_step()), tolerance_);
-  return counted([&] { return checker_.clearance_bound(q, cap, fcl_cap); });
+  // A tree node's bound, known since it was added, serves every motion from it.
+  if (const std::optional<double> known = cache_.find(q, fcl_cap))
+    return std::min(*known, cap);
+  const double c = counted([&] { return checker_.clearance_bound(q, cap, fcl_cap); });
+  cache_.store(q, c, fcl_cap);
+  return c;
 }
 
 double MotionValidator::displacement_rate(const Config& a, const Config& b) const {

@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tandem/collision/clearance_cache.hpp"
 #include "tandem/collision/collision_checker.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/space/se3_space.hpp"
@@ -140,6 +141,7 @@ class MotionValidator {
   // Reused by check_motion, no allocation per call.
   std::vector<std::pair<unsigned, unsigned>> queue_;
   std::vector<std::pair<double, double>> stretches_;
+  ClearanceCache cache_;
 };
 
 }  // namespace tandem

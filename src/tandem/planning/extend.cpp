@@ -1,21 +1,15 @@
 #include "tandem/planning/extend.hpp"
 
-namespace tandem {
+#include "tandem/planning/adaptive_step.hpp"
 
-Extension extend(Tree& tree, const Config& q_target, double range, MotionValidator& validator,
-                 ExtendMode mode, NodeSource source) {
+namespace tandem {
+namespace {
+
+/// The motion from e.near toward q_target (at distance d), validated as `mode` says.
+Extension extend_checked(Tree& tree, Extension e, double d, const Config& q_target, double range,
+                         MotionValidator& validator, ExtendMode mode, NodeSource source) {
   const SE3Space& space = validator.space();
-  Extension e;
-  e.near = tree.nearest(q_target);
   const Config& q_near = tree.nodes[e.near];
-  const double d = space.distance(q_near, q_target);
-  if (d == 0.0) {
-    // The target is a node already (an operator holding the part still is the same target
-    // iteration after iteration): reached, and nothing to add.
-    e.status = ExtendStatus::reached;
-    e.node = e.near;
-    return e;
-  }
   const bool within = d <= range;
   const Config q_new = within ? q_target : space.interpolate(q_near, q_target, range / d);
 
@@ -36,6 +30,31 @@ Extension extend(Tree& tree, const Config& q_target, double range, MotionValidat
     e.node = tree.add(check.last_valid, e.near, source);
     e.added = true;
     e.status = ExtendStatus::stopped;
+  }
+  return e;
+}
+
+}  // namespace
+
+Extension extend(Tree& tree, const Config& q_target, double range, MotionValidator& validator,
+                 ExtendMode mode, NodeSource source, AdaptiveStep* steps) {
+  Extension e;
+  e.near = tree.nearest(q_target);
+  const double d = validator.space().distance(tree.nodes[e.near], q_target);
+  if (d == 0.0) {
+    // The target is a node already (an operator holding the part still is the same target
+    // iteration after iteration): reached, and nothing to add.
+    e.status = ExtendStatus::reached;
+    e.node = e.near;
+    return e;
+  }
+  const double step = steps != nullptr ? steps->step(e.near) : range;
+  e = extend_checked(tree, e, d, q_target, step, validator, mode, source);
+  if (steps != nullptr) {
+    if (e.status == ExtendStatus::trapped)
+      steps->blocked(e.near);
+    else if (e.added)
+      steps->added(e.node, e.near);
   }
   return e;
 }

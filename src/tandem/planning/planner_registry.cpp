@@ -26,7 +26,10 @@ std::unique_ptr<Planner> make_rrt(const PlannerContext& c) {
   return std::make_unique<RRT>(c.validator, c.start, c.goal, c.settings);
 }
 std::unique_ptr<Planner> make_interactive(const PlannerContext& c) {
-  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, c.settings, sharing(c));
+  // The papers' algorithms, with their fixed step (adaptive_step is the computer alone's).
+  PlannerSettings settings = c.settings;
+  settings.adaptive_step = 1.0;
+  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, settings, sharing(c));
 }
 std::unique_ptr<Planner> make_irrt(const PlannerContext& c) {
   return std::make_unique<IRRT>(c.validator, c.start, c.goal, c.settings, *c.interaction);

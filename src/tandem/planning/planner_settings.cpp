@@ -11,40 +11,9 @@ namespace {
 
 using S = PlannerSettings;
 
-ParamTable<S> make_table() {
+/// How motions are checked: validation, tolerance, distance_grid.
+void add_validation_params(ParamTable<S>& t) {
   const double inf = std::numeric_limits<double>::infinity();
-  ParamTable<S> t;
-  t.push_back(real_param<S>(
-      {.name = "range",
-       .label = "range",
-       .unit = "m",
-       .min = 0.0,
-       .max = inf,
-       .help = "Longest motion added per extension (0: the problem's, else 0.2 x the space's "
-               "extent)"},
-      &S::range));
-  t.push_back(
-      real_param<S>({.name = "goal_bias",
-                     .label = "goal bias",
-                     .min = 0.0,
-                     .max = 1.0,
-                     .help = "RRT's and the I-RRT's probability of extending toward the goal",
-                     .group = "goal_bias"},
-                    &S::goal_bias));
-  t.push_back(choice_param<S>(
-      {.name = "extend",
-       .label = "extension",
-       .choices = {"classic", "last-valid"},
-       .help = "How a tree grows toward a target it cannot reach: classic (all or nothing) or "
-               "last-valid (keep the last valid configuration, the papers' Add_Tree)"},
-      &S::extend, [](ExtendMode m) { return to_string(m); }, parse_extend_mode));
-  t.push_back(choice_param<S>(
-      {.name = "nearest_neighbors",
-       .label = "nearest neighbours",
-       .choices = {"kdtree", "linear"},
-       .help = "The trees' nearest-neighbour index: a k-d tree, or a linear scan"},
-      &S::nearest_neighbors, [](const std::string& n) { return n; },
-      [](const std::string& n) { return std::optional<std::string>(n); }));
   t.push_back(choice_param<S>(
       {.name = "validation",
        .label = "motion validation",
@@ -75,6 +44,53 @@ ParamTable<S> make_table() {
                : v == "off" ? std::optional<bool>(false)
                             : std::nullopt;
       }));
+}
+
+ParamTable<S> make_table() {
+  const double inf = std::numeric_limits<double>::infinity();
+  ParamTable<S> t;
+  t.push_back(real_param<S>(
+      {.name = "range",
+       .label = "range",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Longest motion added per extension (0: the problem's, else 0.2 x the space's "
+               "extent)"},
+      &S::range));
+  t.push_back(real_param<S>(
+      {.name = "adaptive_step",
+       .label = "adaptive step",
+       .min = 1.0 / 1024.0,
+       .max = 1.0,
+       .help = "Classic extension: the smallest step, as a share of range; a blocked "
+               "extension halves its node's step down to it, a new node starts at twice its "
+               "parent's (at most range); 1: every step is range, as OMPL's",
+       .group = "portfolio"},
+      &S::adaptive_step));
+  t.push_back(
+      real_param<S>({.name = "goal_bias",
+                     .label = "goal bias",
+                     .min = 0.0,
+                     .max = 1.0,
+                     .help = "RRT's and the I-RRT's probability of extending toward the goal",
+                     .group = "goal_bias"},
+                    &S::goal_bias));
+  t.push_back(choice_param<S>(
+      {.name = "extend",
+       .label = "extension",
+       .choices = {"classic", "last-valid"},
+       .help = "How a tree grows toward a target it cannot reach: classic (all or nothing) or "
+               "last-valid (keep the last valid configuration, the papers' Add_Tree)"},
+      &S::extend, [](ExtendMode m) { return to_string(m); }, parse_extend_mode));
+  t.push_back(choice_param<S>(
+      {.name = "nearest_neighbors",
+       .label = "nearest neighbours",
+       .choices = {"kdtree", "linear"},
+       .help = "The trees' nearest-neighbour index: a k-d tree, or a linear scan"},
+      &S::nearest_neighbors, [](const std::string& n) { return n; },
+      [](const std::string& n) { return std::optional<std::string>(n); }));
+  add_validation_params(t);
   t.push_back(integer_param<S>(
       {.name = "threads",
        .label = "threads",

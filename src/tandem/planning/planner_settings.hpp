@@ -29,6 +29,9 @@ std::optional<ExtendMode> parse_extend_mode(std::string_view name);
 struct PlannerSettings {
   /// Longest motion added in one extension; 0 means 0.2 x the space's maximum extent (OMPL).
   double range = 0.0;
+  /// The computer-alone planners' adaptive step (planning/adaptive_step.hpp): the smallest step,
+  /// as a share of range, a node's extensions shrink to; 1: a fixed step of range (OMPL's).
+  double adaptive_step = 0.125;
   /// RRT's and the I-RRT's probability of extending toward the goal, in [0, 1].
   double goal_bias = 0.05;
   /// The run's only source of randomness.

@@ -8,6 +8,7 @@ RRT::RRT(MotionValidator& validator, const Config& start, const Config& goal,
          const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler)
     : Planner(validator, start, goal, settings),
       tree_(validator.space(), settings.nearest_neighbors, start),
+      steps_(range_, adaptive_floor(settings)),
       sampler_(sampler != nullptr ? std::move(sampler)
                                   : std::make_unique<UniformSampler>(validator.space())) {
   attach(tree_);
@@ -23,8 +24,8 @@ bool RRT::iterate() {
     sampler_->sample({stats().iterations, this, &rng_}, targets_);
   for (const Target& target : targets_) {
     // 2. EXTEND.
-    const Extension ext =
-        extend(tree_, target.q, range_, validator_, settings_.extend, target.source);
+    const Extension ext = extend(tree_, target.q, range_, validator_, settings_.extend,
+                                 target.source, steps_.adapts() ? &steps_ : nullptr);
     count_extension(ext.status);
     // 3. Solved when the goal is reached.
     if (toward_goal && ext.status == ExtendStatus::reached) {

@@ -5,11 +5,12 @@
 // Each iteration:
 //   1. q_rand <- the goal with probability goal_bias, else the sampler's targets (a uniform sample
 //      without a sampler)
-//   2. EXTEND(T, q_rand) for each target
+//   2. EXTEND(T, q_rand) for each target by q_near's adaptive step (adaptive_step.hpp)
 //   3. solved when an extension toward the goal reaches it
 
 #include <memory>
 
+#include "tandem/planning/adaptive_step.hpp"
 #include "tandem/planning/planner.hpp"
 
 namespace tandem {
@@ -29,6 +30,7 @@ class RRT final : public Planner {
 
  private:
   Tree tree_;
+  AdaptiveStep steps_;  ///< adaptive_step.hpp
   std::unique_ptr<TargetSampler> sampler_;
   std::vector<Target> targets_;
 };

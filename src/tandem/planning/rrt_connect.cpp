@@ -9,6 +9,8 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
     : Planner(validator, start, goal, settings),
       start_tree_(validator.space(), settings.nearest_neighbors, start),
       goal_tree_(validator.space(), settings.nearest_neighbors, goal),
+      start_steps_(range_, adaptive_floor(settings)),
+      goal_steps_(range_, adaptive_floor(settings)),
       sampler_(sampler != nullptr ? std::move(sampler)
                                   : std::make_unique<UniformSampler>(validator.space())) {
   attach(start_tree_);
@@ -34,8 +36,9 @@ bool RRTConnect::iterate() {
 
 bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target) {
   // 2. Add_Tree: extend toward the target, then connect the other tree to q_new.
-  const Extension ext =
-      extend(tree_a, target.q, range_, validator_, settings_.extend, target.source);
+  AdaptiveStep& steps = a_is_start ? start_steps_ : goal_steps_;
+  const Extension ext = extend(tree_a, target.q, range_, validator_, settings_.extend,
+                               target.source, steps.adapts() ? &steps : nullptr);
   count_extension(ext.status);
   if (ext.status == ExtendStatus::trapped)
     return false;

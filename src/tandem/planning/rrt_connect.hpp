@@ -10,7 +10,8 @@
 // Each iteration:
 //   1. targets <- the sampler's targets for this iteration (one q_rand, or N contact samples)
 //   2. for each target q:
-//        Add_Tree: q_new <- EXTEND(T_a, q); if TRAPPED, next target
+//        Add_Tree: q_new <- EXTEND(T_a, q), by q_near's adaptive step (adaptive_step.hpp; a
+//                  fixed step for the interactive planners); if TRAPPED, next target
 //        CONNECT(T_b, q_new): EXTEND T_b toward q_new while it ADVANCES
 //   3.   if T_b REACHED q_new: the trees meet; the path is start -> q_new -> goal
 //   4. swap the roles of T_a and T_b
@@ -18,6 +19,7 @@
 
 #include <memory>
 
+#include "tandem/planning/adaptive_step.hpp"
 #include "tandem/planning/planner.hpp"
 
 namespace tandem {
@@ -41,6 +43,9 @@ class RRTConnect final : public Planner {
 
   Tree start_tree_;
   Tree goal_tree_;
+  /// The steps of the extensions toward the targets (the connections take full steps).
+  AdaptiveStep start_steps_;
+  AdaptiveStep goal_steps_;
   bool extend_start_tree_ = true;
   std::unique_ptr<TargetSampler> sampler_;
   std::vector<Target> targets_;
