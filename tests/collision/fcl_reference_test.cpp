@@ -64,8 +64,8 @@ bool reference_collides(const std::vector<ReferencePart>& object,
     for (const ReferencePart& e : obstacles) {
       fcl::CollisionRequestd request;
       fcl::CollisionResultd result;
-      if (fcl::collide(o.geometry.get(), X_WO * o.pose, e.geometry.get(), e.pose, request,
-                       result) > 0)
+      if (fcl::collide(o.geometry.get(), X_WO * o.pose, e.geometry.get(), e.pose, request, result) >
+          0)
         return true;
     }
   }

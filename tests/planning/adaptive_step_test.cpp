@@ -48,12 +48,12 @@ TEST(AdaptiveStep, ExtendGoesByTheNearNodesStep) {
   test::ProblemFixture f;
   Tree tree(f.problem.space, "kdtree", test::at(-2, 1));
   AdaptiveStep steps(2.0, 0.125);
-  const Extension through_wall =
-      extend(tree, test::at(2, 1), 2.0, f.validator, ExtendMode::classic, NodeSource::random, &steps);
+  const Extension through_wall = extend(tree, test::at(2, 1), 2.0, f.validator, ExtendMode::classic,
+                                        NodeSource::random, &steps);
   EXPECT_EQ(through_wall.status, ExtendStatus::trapped);
   EXPECT_EQ(steps.step(0), 1.0);
-  const Extension away =
-      extend(tree, test::at(-2, -2.5), 2.0, f.validator, ExtendMode::classic, NodeSource::random, &steps);
+  const Extension away = extend(tree, test::at(-2, -2.5), 2.0, f.validator, ExtendMode::classic,
+                                NodeSource::random, &steps);
   ASSERT_EQ(away.status, ExtendStatus::advanced);
   EXPECT_NEAR(f.problem.space.distance(tree.nodes[0], tree.nodes[away.node]), 1.0, 1e-9);
   EXPECT_EQ(steps.step(away.node), 2.0);
