@@ -33,7 +33,8 @@ std::string mode_help() {
   std::string h = "The planner:";
   for (const PlannerEntry& e : planner_registry())
     h += "\n  " + std::string(e.name) + ": " + std::string(e.description);
-  return h + "\n(default: the problem's, else birrt)";
+  return h + "\n(default: the problem's, else " + std::string(kMixedPortfolio) +
+         ", which on one thread is birrt)";
 }
 
 }  // namespace
@@ -41,8 +42,8 @@ std::string mode_help() {
 RunSpec make_spec(const RunArgs& args, const Problem& problem) {
   if (args.mode && args.planner)
     throw InputError("--mode", "give --mode or --planner, not both");
-  const std::string mode =
-      args.mode.value_or(args.planner.value_or(problem.hints.planner.value_or("birrt")));
+  const std::string mode = args.mode.value_or(
+      args.planner.value_or(problem.hints.planner.value_or(std::string(kMixedPortfolio))));
   // --mode and --planner are checked by the options, the problem's planner by check_hints.
   RunSpec spec = default_spec(mode, problem.hints);
   if (args.seed)

@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "support/test_support.hpp"
+#include "tandem/planning/planner_registry.hpp"
+#include "tandem/runs/portfolio.hpp"
 
 namespace tandem {
 namespace {
@@ -182,7 +184,11 @@ TEST(Cli, PlansWritesJsonAndAPathThatChecks) {
   }
   EXPECT_TRUE(j["solved"].get<bool>());
   EXPECT_EQ(j["seed"].get<int>(), 3);
-  EXPECT_EQ(j["edges"].get<int>(), j["nodes"].get<int>() - 2);
+  // The default planner is the mixed portfolio: the winning member grew one tree (RRT) or two.
+  EXPECT_EQ(j["mode"], std::string(kMixedPortfolio));
+  const std::string mode = j["mode"].get<std::string>();
+  const int trees = member_planner(mode, j["member"].get<unsigned>()) == "rrt" ? 1 : 2;
+  EXPECT_EQ(j["edges"].get<int>(), j["nodes"].get<int>() - trees);
   EXPECT_GT(j["path_length"].get<double>(), 3.99);
   const test::RunResult check = run_tandem({"check-path", problem, out});
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
