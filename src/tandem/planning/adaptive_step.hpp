@@ -44,12 +44,16 @@ class AdaptiveStep {
 
   /// An extension from n added nothing.
   void blocked(NodeId n) {
+    if (!adapts())
+      return;  // every step is range: nothing to record
     reach(n);
     step_[n] = std::max(min_, 0.5 * step_[n]);
   }
 
   /// `node` was added as a child of `parent`.
   void added(NodeId node, NodeId parent) {
+    if (!adapts())
+      return;
     const double s = std::min(range_, 2.0 * step(parent));
     reach(node);
     step_[node] = s;

@@ -24,8 +24,8 @@ bool RRT::iterate() {
     sampler_->sample({stats().iterations, this, &rng_}, targets_);
   for (const Target& target : targets_) {
     // 2. EXTEND.
-    const Extension ext = extend(tree_, target.q, range_, validator_, settings_.extend,
-                                 target.source, steps_.adapts() ? &steps_ : nullptr);
+    const Extension ext =
+        extend(tree_, target.q, range_, validator_, settings_.extend, target.source, &steps_);
     count_extension(ext.status);
     // 3. Solved when the goal is reached.
     if (toward_goal && ext.status == ExtendStatus::reached) {

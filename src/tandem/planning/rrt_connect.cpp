@@ -36,9 +36,8 @@ bool RRTConnect::iterate() {
 
 bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target) {
   // 2. Add_Tree: extend toward the target, then connect the other tree to q_new.
-  AdaptiveStep& steps = a_is_start ? start_steps_ : goal_steps_;
   const Extension ext = extend(tree_a, target.q, range_, validator_, settings_.extend,
-                               target.source, steps.adapts() ? &steps : nullptr);
+                               target.source, a_is_start ? &start_steps_ : &goal_steps_);
   count_extension(ext.status);
   if (ext.status == ExtendStatus::trapped)
     return false;
