@@ -60,8 +60,8 @@ Command add_check_path_command(CLI::App& app) {
   }
   app.footer(
       "Checks every state (bounds, collision) and every motion between consecutive states: the "
-      "states at the problem's resolution (discrete, the default) or the whole continuous motion "
-      "(exact).\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
+      "whole continuous motion (exact, the default) or the states at the problem's resolution "
+      "(discrete).\nExit 0 if all are valid; 1 and the first invalid index otherwise; 2 for bad "
       "input.");
   return [args] { return run_check(*args); };
 }

@@ -84,7 +84,7 @@ void add_settings(nlohmann::json& j, const std::map<std::string, ParamValue>& tu
   if (j.contains("contact_distance"))
     j["contact_distance"] = contact_distance(i, problem.space);
   if (j.contains("contact_clearance"))
-    j["contact_clearance"] = contact_clearance(i, problem.space);
+    j["contact_clearance"] = contact_clearance(i, problem.space, spec.settings.validation);
   if (j.contains("sigma"))
     j["sigma"] = sigma_translation(i, problem.space);
 }

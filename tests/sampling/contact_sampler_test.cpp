@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "support/problems.hpp"
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/interaction/contact_frame.hpp"
+#include "tandem/interaction/interaction_settings.hpp"
 
 namespace tandem {
 namespace {
@@ -79,6 +81,43 @@ TEST(ContactSampler, SamplesALineInPlanarSpaces) {
     ASSERT_DOUBLE_EQ(q->t.z(), 1.0);
     ASSERT_TRUE(plane.satisfies_bounds(*q));
   }
+}
+
+// An exact last-valid sweep stops in front of an obstacle at kSweepStopSteps translation steps, so
+// a contact node nearer than that could not be extended along its surface: under exact validation
+// the default clearance lies above the stop, and slides between contact samples are valid.
+TEST(ContactSampler, ExactSweepsSlideBetweenSamplesAtTheDefaultClearance) {
+  FloorScene f;
+  const SE3Space& space = f.problem.space;
+  CollisionChecker checker(f.problem.scene);
+  MotionValidator validator(space, checker, {.mode = MotionValidation::exact});
+  const InteractionSettings defaults;
+  const double step = space.translation_step();
+  EXPECT_DOUBLE_EQ(contact_clearance(defaults, space, MotionValidation::discrete), 0.1 * step);
+  const double clearance = contact_clearance(defaults, space, MotionValidation::exact);
+  EXPECT_GT(clearance, kSweepStopSteps * step);
+  const Config q_device = at(-1, 0.5, 0.3, 0.4);
+  const auto frame = find_local_frame(checker.nearest_obstacle(q_device), q_device);
+  ASSERT_TRUE(frame);
+  Rng rng(8);
+  const auto sample = [&](double c) {
+    std::optional<Config> q;
+    while (!q || checker.obstacle_name(checker.nearest_obstacle(*q).obstacle) != "floor")
+      q = sample_contact(*frame, q_device.q, space, c, rng);
+    return *q;
+  };
+  for (int i = 0; i < 20; ++i) {
+    const Config a = sample(clearance), b = sample(clearance);
+    ASSERT_TRUE(validator.is_valid(a));
+    EXPECT_TRUE(validator.check_motion_last_valid(a, b).valid);
+  }
+  // Nearer than the stop, the sweep does not leave its start.
+  const double near = 0.5 * kSweepStopSteps * step;
+  const Config a = sample(near), b = sample(near);
+  ASSERT_TRUE(validator.is_valid(a));
+  const MotionCheck stuck = validator.check_motion_last_valid(a, b);
+  EXPECT_FALSE(stuck.valid);
+  EXPECT_EQ(stuck.last_valid_step, 0U);
 }
 
 }  // namespace

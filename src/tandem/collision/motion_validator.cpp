@@ -19,8 +19,6 @@ constexpr double kRateMargin = 1e-9;
 
 /// The largest clearance asked of FCL, in translation steps (the distance grid is asked for more).
 constexpr double kCapSteps = 0.25;
-/// The clearance, in translation steps, at which a last-valid sweep stops in front of an obstacle.
-constexpr double kStopSteps = 0.1;
 /// The default tolerance, as a share of the bounds' diagonal. 1e-5 refused OMPL.app's own sample
 /// solution of alpha-1.2, whose state 48 passes between 3e-3 and 6.6e-3 from the obstacle (the
 /// diagonal is 665).
@@ -224,7 +222,7 @@ MotionCheck MotionValidator::last_valid_exact(const Config& a, const Config& b) 
   // sweep stops up to a step before it): closer, the steps would shrink with the clearance, and
   // nodes that close would make every later motion from them slow to certify (at the tolerance
   // itself, environment 1 planned 2000 times slower).
-  const double stop = std::max(tolerance_, kStopSteps * space_.translation_step());
+  const double stop = std::max(tolerance_, kSweepStopSteps * space_.translation_step());
   // Asked for at least `stop`: a bound capped below it (a short motion needs little) would read as
   // too close.
   const auto bound = [&](const Config& q, double rest) {

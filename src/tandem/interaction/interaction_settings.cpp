@@ -1,5 +1,6 @@
 #include "tandem/interaction/interaction_settings.hpp"
 
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/enum_names.hpp"
 
 // The tables name only the fields of a ParamSpec that matter for each tunable (designated
@@ -59,8 +60,8 @@ void add_sharing(ParamTable<S>& t) {
        .unit = "m",
        .min = 0.0,
        .max = inf,
-       .help = "Gap between contact samples and the tangent plane (0: 0.1 x the motion "
-               "checker's translation step)",
+       .help = "Gap between contact samples and the tangent plane (0: 0.2 x the motion "
+               "checker's translation step with exact validation, 0.1 x with discrete)",
        .group = "sharing",
        .live = true},
       &S::contact_clearance));
@@ -147,8 +148,12 @@ std::optional<IrrtSampling> parse_irrt_sampling(std::string_view name) {
 double contact_distance(const InteractionSettings& s, const SE3Space& space) {
   return s.contact_distance > 0.0 ? s.contact_distance : 0.015 * space.translation_extent();
 }
-double contact_clearance(const InteractionSettings& s, const SE3Space& space) {
-  return s.contact_clearance > 0.0 ? s.contact_clearance : 0.1 * space.translation_step();
+double contact_clearance(const InteractionSettings& s, const SE3Space& space,
+                         MotionValidation validation) {
+  if (s.contact_clearance > 0.0)
+    return s.contact_clearance;
+  const double steps = validation == MotionValidation::exact ? 2.0 * kSweepStopSteps : 0.1;
+  return steps * space.translation_step();
 }
 double sigma_translation(const InteractionSettings& s, const SE3Space& space) {
   return s.sigma > 0.0 ? s.sigma : 0.02 * space.translation_extent();

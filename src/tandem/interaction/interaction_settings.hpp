@@ -9,6 +9,7 @@
 //   devices", ECMS 2011: the I-RRT's pseudo-forces, Gaussian shooting area (sigma), sampling modes,
 //   p nearest nodes.
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -17,6 +18,8 @@
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
+
+enum class MotionValidation : std::uint8_t;  // collision/motion_validator.hpp
 
 /// I-RRT sampling modes (2011, section VII): around the user's position (MAG) or path (PATH), with
 /// or without uniform samples added (+CS).
@@ -37,7 +40,7 @@ struct InteractionSettings {
   /// bounds' diagonal (the papers' 0.15 m in their 10 m scene).
   double contact_distance = 0.0;
   /// Gap between contact samples and the tangent plane (FCL counts touching as collision). 0:
-  /// 0.1 x the space's translation step.
+  /// contact_clearance(s, space, validation), scaled to the space's translation step.
   double contact_clearance = 0.0;
 
   // I-RRT (2011).
@@ -56,7 +59,11 @@ const ParamTable<InteractionSettings>& interaction_parameters();
 
 /// Scene-scaled values of the "0 means default" fields.
 double contact_distance(const InteractionSettings& s, const SE3Space& space);
-double contact_clearance(const InteractionSettings& s, const SE3Space& space);
+/// 0 (the default) gives 0.1 x the translation step under discrete validation, and twice the exact
+/// sweep's stop (kSweepStopSteps) under exact validation: a contact node nearer than the stop could
+/// not be extended along the surface, since an exact last-valid sweep never leaves it.
+double contact_clearance(const InteractionSettings& s, const SE3Space& space,
+                         MotionValidation validation);
 double sigma_translation(const InteractionSettings& s, const SE3Space& space);
 
 /// InteractionSettings shared between a UI thread (which changes them) and the planner thread.

@@ -16,7 +16,8 @@ namespace {
 
 std::unique_ptr<TargetSampler> sharing(const PlannerContext& c) {
   return std::make_unique<AuthoritySharing>(c.validator.space(), *c.interaction,
-                                            c.settings.interaction, c.settings.seed);
+                                            c.settings.interaction, c.settings.seed,
+                                            c.settings.validation);
 }
 
 std::unique_ptr<Planner> make_birrt(const PlannerContext& c) {

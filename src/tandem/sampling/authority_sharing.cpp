@@ -7,8 +7,10 @@
 namespace tandem {
 
 AuthoritySharing::AuthoritySharing(const SE3Space& space, const Interaction& interaction,
-                                   const InteractionSettings& settings, std::uint64_t seed)
+                                   const InteractionSettings& settings, std::uint64_t seed,
+                                   MotionValidation validation)
     : space_(space),
+      validation_(validation),
       interaction_(interaction),
       settings_(settings),
       authority_rng_(seed ^ 0xa5a5a5a5deadbeefULL),
@@ -43,7 +45,7 @@ bool AuthoritySharing::contact_sampling(const OperatorState& op, const Interacti
     return false;
   // Step 7: ContactSampling(P_o, P_n, N, q_device).
   ++stats_.contact_entries;
-  const double clearance = contact_clearance(s, space_);
+  const double clearance = contact_clearance(s, space_, validation_);
   const std::size_t before = out.size();
   for (int i = 0; i < s.contact_samples; ++i) {
     if (auto q = sample_contact(*frame, op.device.q_device.q, space_, clearance, contact_rng_))

@@ -20,6 +20,7 @@
 
 #include <optional>
 
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/interaction/interaction.hpp"
 #include "tandem/sampling/target_sampler.hpp"
 
@@ -28,8 +29,10 @@ namespace tandem {
 class AuthoritySharing final : public TargetSampler {
  public:
   /// `interaction.feed` is required; without `interaction.parameters`, `settings` hold throughout.
+  /// `validation` is the planner's way of checking motions (it sets the default contact clearance).
   AuthoritySharing(const SE3Space& space, const Interaction& interaction,
-                   const InteractionSettings& settings, std::uint64_t seed);
+                   const InteractionSettings& settings, std::uint64_t seed,
+                   MotionValidation validation);
 
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
   SamplerStats stats() const override;
@@ -40,6 +43,7 @@ class AuthoritySharing final : public TargetSampler {
                         std::vector<Target>& out);
 
   const SE3Space& space_;
+  MotionValidation validation_;
   Interaction interaction_;
   InteractionSettings settings_;
   Rng authority_rng_;  ///< the authority draws, apart from the sampling stream
