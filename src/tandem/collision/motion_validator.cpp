@@ -3,13 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tandem/core/enum_names.hpp"
 #include "tandem/core/error.hpp"
 
 namespace tandem {
 namespace {
-
-constexpr EnumNames<MotionValidation, 2> kValidationNames{{"exact", "discrete"}};
 
 /// A certified stretch is used a little short of its half-width c / L, so that neighbouring
 /// stretches overlap instead of meeting at a point whose clearance is only known to be >= 0.
@@ -36,14 +33,6 @@ double needed_clearance(double rate, double half_width) {
 }
 
 }  // namespace
-
-std::string_view to_string(MotionValidation v) {
-  return kValidationNames.name(v);
-}
-
-std::optional<MotionValidation> parse_motion_validation(std::string_view name) {
-  return kValidationNames.parse(name);
-}
 
 MotionValidator::MotionValidator(const SE3Space& space, CollisionChecker& checker,
                                  const ValidationSettings& settings)

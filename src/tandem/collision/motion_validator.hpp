@@ -25,26 +25,15 @@
 
 #include <cstdint>
 #include <optional>
-#include <string_view>
 #include <vector>
 
 #include "tandem/collision/clearance_cache.hpp"
 #include "tandem/collision/collision_checker.hpp"
+#include "tandem/collision/motion_validation.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
-
-enum class MotionValidation : std::uint8_t { exact, discrete };
-
-/// The clearance, in translation steps, at which an exact last-valid sweep stops in front of an
-/// obstacle (MotionValidator::check_motion_last_valid): a configuration closer than this cannot
-/// be extended toward the obstacle's side in exact mode.
-inline constexpr double kSweepStopSteps = 0.1;
-
-/// "exact" or "discrete".
-std::string_view to_string(MotionValidation v);
-std::optional<MotionValidation> parse_motion_validation(std::string_view name);
 
 struct ValidationSettings {
   MotionValidation mode = MotionValidation::exact;

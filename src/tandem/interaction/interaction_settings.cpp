@@ -1,6 +1,5 @@
 #include "tandem/interaction/interaction_settings.hpp"
 
-#include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/enum_names.hpp"
 
 // The tables name only the fields of a ParamSpec that matter for each tunable (designated

@@ -9,17 +9,15 @@
 //   devices", ECMS 2011: the I-RRT's pseudo-forces, Gaussian shooting area (sigma), sampling modes,
 //   p nearest nodes.
 
-#include <cstdint>
 #include <optional>
 #include <string_view>
 
+#include "tandem/collision/motion_validation.hpp"
 #include "tandem/core/parameter.hpp"
 #include "tandem/interaction/latest_value.hpp"
 #include "tandem/space/se3_space.hpp"
 
 namespace tandem {
-
-enum class MotionValidation : std::uint8_t;  // collision/motion_validator.hpp
 
 /// I-RRT sampling modes (2011, section VII): around the user's position (MAG) or path (PATH), with
 /// or without uniform samples added (+CS).

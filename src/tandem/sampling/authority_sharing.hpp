@@ -20,7 +20,7 @@
 
 #include <optional>
 
-#include "tandem/collision/motion_validator.hpp"
+#include "tandem/collision/motion_validation.hpp"
 #include "tandem/interaction/interaction.hpp"
 #include "tandem/sampling/target_sampler.hpp"
 
