@@ -44,6 +44,17 @@ INSTANTIATE_TEST_SUITE_P(EasyAndCubicles, OmplAppRuns,
                                   std::to_string(std::get<2>(test_info.param));
                          });
 
+TEST(BugtrapRuns, PassageIslandsCarryBiRRTThroughTheFunnel) {
+  // Without passage islands no run of tandem (10 of 60 s) or of OMPL got through bugtrap's funnel;
+  // with them, BiRRT on one thread does, and its path is valid along every motion.
+  TANDEM_REQUIRE_SHARED_DATA();
+  const Problem problem =
+      load_ompl_app_problem(test::shared_dir() / "benchmarks" / "omplapp" / "3D" / "bugtrap.cfg");
+  const PlanRun r = plan(problem, "birrt", 1, 60.0);
+  ASSERT_EQ(r.status, PlannerStatus::solved);
+  EXPECT_TRUE(r.path_valid);
+}
+
 class BuiltinSceneRuns : public ::testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(BuiltinSceneRuns, SolveClutteredEnvironment1WithTheScenesSettings) {

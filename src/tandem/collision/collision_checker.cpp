@@ -9,6 +9,7 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -175,6 +176,24 @@ void add_prefilter_shape(const FclPart& part, const Eigen::Isometry3d& X,
   }
 }
 
+/// Principal axes of the points (about the reference point, the origin), longest extent first.
+ObjectExtent principal_extent(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const auto& p : points)
+    scatter += p * p.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  ObjectExtent e;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d axis = eig.eigenvectors().col(2 - k);  // largest spread first
+    double half = 0.0;
+    for (const auto& p : points)
+      half = std::max(half, std::abs(p.dot(axis)));
+    e.axes.col(k) = axis;
+    e.half_extents(k) = half;
+  }
+  return e;
+}
+
 /// The most inner spheres a pre-filter query opens before it leaves the query to FCL.
 constexpr int kPrefilterBudget = 64;
 
@@ -296,6 +315,27 @@ void CollisionChecker::drop_distance_grid() {
 
 bool CollisionChecker::has_distance_grid() const {
   return impl_->active != nullptr;
+}
+
+const DistanceGrid* CollisionChecker::distance_grid() const {
+  return impl_->active != nullptr ? &impl_->active->grid : nullptr;
+}
+
+ObjectExtent CollisionChecker::object_extent() const {
+  std::vector<DistanceGrid::Triangle> triangles;
+  std::vector<DistanceGrid::Box> solids;
+  for (const FclPart& part : impl_->geometry->object)
+    add_prefilter_shape(part, part.pose, triangles, solids);
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& t : triangles)
+    points.insert(points.end(), {t.a, t.b, t.c});
+  for (const auto& b : solids) {
+    for (int corner = 0; corner < 8; ++corner)
+      points.push_back({(corner & 1) != 0 ? b.max.x() : b.min.x(),
+                        (corner & 2) != 0 ? b.max.y() : b.min.y(),
+                        (corner & 4) != 0 ? b.max.z() : b.min.z()});
+  }
+  return principal_extent(points);
 }
 
 bool CollisionChecker::is_collision_free(const Config& q) {

@@ -39,6 +39,13 @@ struct NearestObstacle {
   std::size_t obstacle = 0;                                     ///< index into Scene::obstacles
 };
 
+struct ObjectExtent {
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();
+};
+
+class DistanceGrid;
+
 class CollisionChecker {
  public:
   /// Builds FCL models for every part (BVHModel<OBBRSS> for meshes, FCL primitives otherwise).
@@ -77,6 +84,11 @@ class CollisionChecker {
   /// translates by dt and turns by angle about a fixed axis.
   double object_radius() const;
 
+  /// The object's principal axes (columns, in the object frame, the longest extent first) and its
+  /// half extents along them about the reference point, from its vertices (box corners for
+  /// primitives).
+  ObjectExtent object_extent() const;
+
   /// Builds the pre-filter (distance_grid.hpp, sphere_tree.hpp) for an object whose reference
   /// point stays inside `bounds`, with cells of `spacing`: from then on is_collision_free() and
   /// clearance_bound() consult it first and pass to FCL only what it cannot certify. It only
@@ -88,6 +100,8 @@ class CollisionChecker {
   /// Back to FCL alone (for comparisons); the grid is kept for a later use_distance_grid().
   void drop_distance_grid();
   bool has_distance_grid() const;
+  /// The distance grid in use, or null (immutable; shared with the clones).
+  const DistanceGrid* distance_grid() const;
 
   std::size_t obstacle_count() const;
   const std::string& obstacle_name(std::size_t index) const;

@@ -58,6 +58,20 @@ class DistanceGrid {
     return distance_[index(i)] * quantum_ - (p - centre).norm() - slack_;
   }
 
+  /// The bound at the centre of cell i (inside dims()): the grid's value there, less the slack.
+  double centre_bound(const Eigen::Vector3i& i) const {
+    return distance_[index(i)] * quantum_ - slack_;
+  }
+  Eigen::Vector3d centre(const Eigen::Vector3i& i) const {
+    return origin_ + (i.cast<double>().array() + 0.5).matrix() * spacing_;
+  }
+
+  /// The stored values, cell (x, y, z) at (z * dims.y + y) * dims.x + x: the centre's distance
+  /// in quanta, before the slack is taken off (centre_bound = value * quantum - slack).
+  const std::vector<std::uint8_t>& values() const { return distance_; }
+  double quantum() const { return quantum_; }
+  double slack() const { return slack_; }
+
   double spacing() const { return spacing_; }
   const Eigen::Vector3i& dims() const { return dims_; }
   std::size_t marked_cells() const { return marked_; }

@@ -30,6 +30,7 @@ std::unique_ptr<Planner> make_interactive(const PlannerContext& c) {
   // The papers' algorithms, with their fixed step (adaptive_step is the computer alone's).
   PlannerSettings settings = c.settings;
   settings.adaptive_step = 1.0;
+  settings.passages = 0.0;
   return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, settings, sharing(c));
 }
 std::unique_ptr<Planner> make_irrt(const PlannerContext& c) {
@@ -47,7 +48,7 @@ const std::vector<PlannerEntry> kRegistry = {
     {.name = "birrt",
      .description = "the computer alone: RRT-Connect (bidirectional RRT)",
      .citation = "Kuffner & LaValle, ICRA 2000",
-     .groups = {"portfolio"},
+     .groups = {"portfolio", "passages"},
      .make = make_birrt},
     {.name = "rrt",
      .description = "the computer alone: single-tree RRT with goal bias",
@@ -59,7 +60,7 @@ const std::vector<PlannerEntry> kRegistry = {
      .description = "the computer alone, one search per thread: RRT-Connect and goal-biased RRT "
                     "on alternate threads (one thread: RRT-Connect)",
      .citation = "Gomes & Selman, AI 2001 (algorithm portfolios)",
-     .groups = {"goal_bias", "portfolio"},
+     .groups = {"goal_bias", "portfolio", "passages"},
      .make = make_birrt},
     {.name = "interactive",
      .description = "authority sharing: RRT-Connect growing toward a uniform sample (probability "

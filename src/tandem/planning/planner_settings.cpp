@@ -68,6 +68,16 @@ ParamTable<S> make_table() {
                "parent's (at most range); 1: every step is range, as OMPL's",
        .group = "portfolio"},
       &S::adaptive_step));
+  t.push_back(real_param<S>(
+      {.name = "passages",
+       .label = "passage islands",
+       .min = 0.0,
+       .max = 1.0,
+       .help = "RRT-Connect's share of iterations, after its first 2000, that aim at islands of "
+               "valid motion made in the workspace's narrow tubes (found on the distance grid); "
+               "0: none",
+       .group = "passages"},
+      &S::passages));
   t.push_back(
       real_param<S>({.name = "goal_bias",
                      .label = "goal bias",

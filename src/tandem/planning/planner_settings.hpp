@@ -32,6 +32,9 @@ struct PlannerSettings {
   /// The computer-alone planners' adaptive step (planning/adaptive_step.hpp): the smallest step,
   /// as a share of range, a node's extensions shrink to; 1: a fixed step of range (OMPL's).
   double adaptive_step = 0.125;
+  /// RRT-Connect's share of iterations, after its first kPassageWarmup, that aim at passage
+  /// islands (passage_islands.hpp); 0: none.
+  double passages = 0.1;
   /// RRT's and the I-RRT's probability of extending toward the goal, in [0, 1].
   double goal_bias = 0.05;
   /// The run's only source of randomness.

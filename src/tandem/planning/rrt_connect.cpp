@@ -1,5 +1,7 @@
 #include "tandem/planning/rrt_connect.hpp"
 
+#include <optional>
+
 #include "tandem/planning/extend.hpp"
 
 namespace tandem {
@@ -12,9 +14,12 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       start_steps_(range_, adaptive_floor(settings)),
       goal_steps_(range_, adaptive_floor(settings)),
       sampler_(sampler != nullptr ? std::move(sampler)
-                                  : std::make_unique<UniformSampler>(validator.space())) {
+                                  : std::make_unique<UniformSampler>(validator.space())),
+      passage_rng_(settings.seed ^ 0x6b6b6b6bc2b2ae35ULL) {
   attach(start_tree_);
   attach(goal_tree_);
+  if (settings.passages > 0.0)
+    islands_ = std::make_unique<PassageIslands>(validator, passage_rng_.split());
 }
 
 bool RRTConnect::iterate() {
@@ -23,6 +28,16 @@ bool RRTConnect::iterate() {
   const bool a_is_start = extend_start_tree_;
   // 4. The next iteration extends the other tree.
   extend_start_tree_ = !extend_start_tree_;
+
+  if (passage_turn()) {
+    // 5. An island's end instead of step 1's targets, if there is one to aim at.
+    const std::uint64_t before = queries();
+    const std::optional<IslandEnd> end = islands_->next_target(a_is_start ? 0 : 1);
+    const bool met = end && aim_at_island(tree_a, tree_b, a_is_start, *end);
+    island_queries_ += queries() - before;
+    if (end)
+      return met;
+  }
 
   // 1. The targets.
   targets_.clear();
@@ -41,21 +56,60 @@ bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Tar
   count_extension(ext.status);
   if (ext.status == ExtendStatus::trapped)
     return false;
-  const Config q_new = tree_a.nodes[ext.node];
+  return meet(tree_a, tree_b, a_is_start, ext.node, target.source);
+}
+
+bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source) {
+  const Config q_new = tree_a.nodes[node];
   Extension con;
   do {
-    con = extend(tree_b, q_new, range_, validator_, settings_.extend, target.source);
+    con = extend(tree_b, q_new, range_, validator_, settings_.extend, source);
   } while (con.status == ExtendStatus::advanced);
   if (con.status != ExtendStatus::reached)
     return false;
 
   // 3. The trees meet at q_new, present in both: keep it once.
-  const NodeId start_node = a_is_start ? ext.node : con.node;
-  const NodeId goal_node = a_is_start ? con.node : ext.node;
+  const NodeId start_node = a_is_start ? node : con.node;
+  const NodeId goal_node = a_is_start ? con.node : node;
   solution_ = start_tree_.path_from_root(start_node);
   std::vector<Config> to_goal = goal_tree_.path_from_root(goal_node);
   solution_.insert(solution_.end(), to_goal.rbegin() + 1, to_goal.rend());
   return true;
+}
+
+std::uint64_t RRTConnect::queries() {
+  const CollisionCounters& c = validator_.checker().counters();
+  return c.state_checks + c.clearance_queries + c.distance_queries;
+}
+
+bool RRTConnect::passage_turn() {
+  if (islands_ == nullptr || stats().iterations < kPassageWarmup)
+    return false;
+  if (islands_->without_passages()) {
+    islands_.reset();
+    return false;
+  }
+  return static_cast<double>(island_queries_) < settings_.passages * static_cast<double>(queries());
+}
+
+bool RRTConnect::aim_at_island(Tree& tree_a, Tree& tree_b, bool a_is_start, const IslandEnd& end) {
+  const int side = a_is_start ? 0 : 1;
+  const Config target = islands_->end(end);
+  Extension ext;
+  do {
+    ext = extend(tree_a, target, range_, validator_, settings_.extend);
+  } while (ext.status == ExtendStatus::advanced);
+  count_extension(ext.status);
+  if (ext.status != ExtendStatus::reached)
+    return false;
+  // The island joins T_a: its chain from the end reached to the other end.
+  Island& island = islands_->island(end.island);
+  island.joined[static_cast<std::size_t>(side)] = true;
+  NodeId node = ext.node;
+  const std::size_t n = island.chain.size();
+  for (std::size_t k = 1; k < n; ++k)
+    node = tree_a.add(island.chain[end.front ? k : n - 1 - k], node);
+  return meet(tree_a, tree_b, a_is_start, node, NodeSource::random);
 }
 
 }  // namespace tandem

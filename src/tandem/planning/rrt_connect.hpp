@@ -15,11 +15,17 @@
 //        CONNECT(T_b, q_new): EXTEND T_b toward q_new while it ADVANCES
 //   3.   if T_b REACHED q_new: the trees meet; the path is start -> q_new -> goal
 //   4. swap the roles of T_a and T_b
+//   5. (the computer alone, after kPassageWarmup iterations, while the islands have cost less than
+//      a share `passages` of the collision queries) instead of steps 1-2's targets, an end of a
+//      passage island (passage_islands.hpp): CONNECT(T_a, end); if T_a REACHES it, the island's
+//      chain joins T_a, and CONNECT(T_b, ...) aims at the chain's other end. Without an island to aim at, the iteration is
+// the usual one.
 // The tree to extend alternates between the start and the goal tree, as in OMPL's RRTConnect.
 
 #include <memory>
 
 #include "tandem/planning/adaptive_step.hpp"
+#include "tandem/planning/passage_islands.hpp"
 #include "tandem/planning/planner.hpp"
 
 namespace tandem {
@@ -38,8 +44,20 @@ class RRTConnect final : public Planner {
   SamplerStats sampler_stats() const override { return sampler_->stats(); }
 
  private:
+  /// Iterations before the passage islands are first aimed at: most problems are solved sooner.
+  static constexpr std::uint64_t kPassageWarmup = 2000;
+
   /// Steps 2-3 for one target; true when the trees meet.
   bool add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target);
+  /// CONNECT(T_b, T_a's node): step 3's meeting; true when the trees meet.
+  bool meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source);
+  /// Whether this iteration turns to the passage islands: after the warm-up, whenever the islands
+  /// (making them and aiming at them) have cost less than `passages` of the checker's queries.
+  bool passage_turn();
+  /// The checker's queries so far (collision, clearance and distance).
+  std::uint64_t queries();
+  /// Aims T_a at an island's end and, if it gets there, takes the island; true when the trees meet.
+  bool aim_at_island(Tree& tree_a, Tree& tree_b, bool a_is_start, const IslandEnd& end);
 
   Tree start_tree_;
   Tree goal_tree_;
@@ -49,6 +67,10 @@ class RRTConnect final : public Planner {
   bool extend_start_tree_ = true;
   std::unique_ptr<TargetSampler> sampler_;
   std::vector<Target> targets_;
+  /// Null when `passages` is 0 (and for the interactive planners).
+  std::unique_ptr<PassageIslands> islands_;
+  Rng passage_rng_;
+  std::uint64_t island_queries_ = 0;  ///< the checker's queries spent on islands
 };
 
 }  // namespace tandem
