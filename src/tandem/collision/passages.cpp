@@ -46,7 +46,7 @@ std::vector<Passage> find_passages(const DistanceGrid& grid, double max_clearanc
   // The first pass reads the stored bytes (a bound is increasing in its byte): a positive bound
   // below max_clearance, at least its neighbours' along two axes.
   const std::vector<std::uint8_t>& v = grid.values();
-  const double lowest = grid.slack() / grid.quantum();                    // bound 0
+  const double lowest = grid.slack() / grid.quantum();                     // bound 0
   const double highest = (max_clearance + grid.slack()) / grid.quantum();  // bound max_clearance
   const Eigen::Vector3i& n = grid.dims();
   const auto nx = static_cast<std::size_t>(n.x());

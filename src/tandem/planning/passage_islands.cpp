@@ -71,7 +71,8 @@ bool PassageIslands::make_island() {
     // 2. A passage configuration.
     const auto [index, band] = draw_passage();
     const Passage& p = (*passages_)[index];
-    const Eigen::Vector3d axis = rng_.uniform01() < 0.5 ? p.direction : Eigen::Vector3d(-p.direction);
+    const Eigen::Vector3d axis =
+        rng_.uniform01() < 0.5 ? p.direction : Eigen::Vector3d(-p.direction);
     Config q;
     q.t = p.point + h * Eigen::Vector3d(rng_.uniform(-0.5, 0.5), rng_.uniform(-0.5, 0.5),
                                         rng_.uniform(-0.5, 0.5));

@@ -42,9 +42,9 @@
 namespace tandem {
 
 struct Island {
-  std::vector<Config> chain;           ///< every motion between neighbours is valid
-  std::array<bool, 2> joined{};        ///< taken by the start tree [0], the goal tree [1]
-  std::size_t band = 0;                ///< its passage's band of clearance
+  std::vector<Config> chain;     ///< every motion between neighbours is valid
+  std::array<bool, 2> joined{};  ///< taken by the start tree [0], the goal tree [1]
+  std::size_t band = 0;          ///< its passage's band of clearance
 };
 
 struct IslandEnd {
