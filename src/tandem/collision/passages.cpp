@@ -68,10 +68,11 @@ std::vector<Passage> find_passages(const DistanceGrid& grid, double max_clearanc
         if (maxima < 2)
           continue;
         const Eigen::Vector3i i(x, y, z);
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s.hessian(i, s.at(i)));
+        const double bound = s.at(i);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s.hessian(i, bound));
         const Eigen::Vector3d& l = eig.eigenvalues();  // ascending
         if (l(1) < kAcross && l(2) > kAlongShare * l(1))
-          found.push_back({grid.centre(i), eig.eigenvectors().col(2).normalized(), s.at(i)});
+          found.push_back({grid.centre(i), eig.eigenvectors().col(2).normalized(), bound});
       }
     }
   }

@@ -112,7 +112,6 @@ std::pair<std::size_t, std::size_t> PassageIslands::draw_passage() {
 }
 
 void PassageIslands::keep(Island island) {
-  ++made_;
   std::size_t in_band = 0;
   std::vector<std::size_t> free;
   for (std::size_t i = 0; i < islands_.size(); ++i) {

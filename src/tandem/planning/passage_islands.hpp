@@ -17,9 +17,8 @@
 //      many wider ones;
 //   3. the part slides along the tube's axis both ways from there, straight motions of half its
 //      longest half extent checked by the validator, until one is invalid, ends nearer than the
-//      sweep's stop or leaves the bounds, at
-//      most four half extents each way; each side ends at its most open configuration (largest
-//      clearance bound), where a tree reaches it most easily;
+//      sweep's stop or leaves the bounds, at most four half extents each way; each side ends at
+//      its most open configuration (largest clearance bound), where a tree reaches it most easily;
 //   4. the island is that chain; a tree that reaches one of its ends takes the whole chain
 //      (rrt_connect.hpp), which carries it through the passage.
 // Every configuration and motion of a chain is checked as the planner checks its own, so an island
@@ -80,8 +79,6 @@ class PassageIslands {
       find();
     return passages_->empty();
   }
-  /// Islands made so far (replaced ones included).
-  std::size_t made() const { return made_; }
 
  private:
   void find();
@@ -104,7 +101,6 @@ class PassageIslands {
   std::vector<Island> islands_;
   /// The passages' indices by band of clearance (empty bands dropped).
   std::vector<std::vector<std::size_t>> bands_;
-  std::size_t made_ = 0;
 };
 
 }  // namespace tandem

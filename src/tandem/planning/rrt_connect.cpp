@@ -14,12 +14,12 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       start_steps_(range_, adaptive_floor(settings)),
       goal_steps_(range_, adaptive_floor(settings)),
       sampler_(sampler != nullptr ? std::move(sampler)
-                                  : std::make_unique<UniformSampler>(validator.space())),
-      passage_rng_(settings.seed ^ 0x6b6b6b6bc2b2ae35ULL) {
+                                  : std::make_unique<UniformSampler>(validator.space())) {
   attach(start_tree_);
   attach(goal_tree_);
   if (settings.passages > 0.0)
-    islands_ = std::make_unique<PassageIslands>(validator, passage_rng_.split());
+    islands_ = std::make_unique<PassageIslands>(validator,
+                                                Rng(settings.seed ^ 0x6b6b6b6bc2b2ae35ULL).split());
 }
 
 bool RRTConnect::iterate() {
@@ -60,11 +60,7 @@ bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Tar
 }
 
 bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source) {
-  const Config q_new = tree_a.nodes[node];
-  Extension con;
-  do {
-    con = extend(tree_b, q_new, range_, validator_, settings_.extend, source);
-  } while (con.status == ExtendStatus::advanced);
+  const Extension con = connect(tree_b, tree_a.nodes[node], source);
   if (con.status != ExtendStatus::reached)
     return false;
 
@@ -75,6 +71,16 @@ bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, 
   std::vector<Config> to_goal = goal_tree_.path_from_root(goal_node);
   solution_.insert(solution_.end(), to_goal.rbegin() + 1, to_goal.rend());
   return true;
+}
+
+Extension RRTConnect::connect(Tree& tree, const Config& q, NodeSource source) {
+  // q is copied first: it may be a node of the tree, whose storage the extensions grow.
+  const Config target = q;
+  Extension ext;
+  do {
+    ext = extend(tree, target, range_, validator_, settings_.extend, source);
+  } while (ext.status == ExtendStatus::advanced);
+  return ext;
 }
 
 std::uint64_t RRTConnect::queries() {
@@ -94,11 +100,7 @@ bool RRTConnect::passage_turn() {
 
 bool RRTConnect::aim_at_island(Tree& tree_a, Tree& tree_b, bool a_is_start, const IslandEnd& end) {
   const int side = a_is_start ? 0 : 1;
-  const Config target = islands_->end(end);
-  Extension ext;
-  do {
-    ext = extend(tree_a, target, range_, validator_, settings_.extend);
-  } while (ext.status == ExtendStatus::advanced);
+  const Extension ext = connect(tree_a, islands_->end(end), NodeSource::random);
   count_extension(ext.status);
   if (ext.status != ExtendStatus::reached)
     return false;

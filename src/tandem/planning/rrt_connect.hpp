@@ -25,6 +25,7 @@
 #include <memory>
 
 #include "tandem/planning/adaptive_step.hpp"
+#include "tandem/planning/extend.hpp"
 #include "tandem/planning/passage_islands.hpp"
 #include "tandem/planning/planner.hpp"
 
@@ -49,6 +50,8 @@ class RRTConnect final : public Planner {
 
   /// Steps 2-3 for one target; true when the trees meet.
   bool add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target);
+  /// CONNECT (Kuffner & LaValle): EXTEND `tree` toward q while it ADVANCES; the last extension.
+  Extension connect(Tree& tree, const Config& q, NodeSource source);
   /// CONNECT(T_b, T_a's node): step 3's meeting; true when the trees meet.
   bool meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source);
   /// Whether this iteration turns to the passage islands: after the warm-up, whenever the islands
@@ -69,7 +72,6 @@ class RRTConnect final : public Planner {
   std::vector<Target> targets_;
   /// Null when `passages` is 0 (and for the interactive planners).
   std::unique_ptr<PassageIslands> islands_;
-  Rng passage_rng_;
   std::uint64_t island_queries_ = 0;  ///< the checker's queries spent on islands
 };
 
