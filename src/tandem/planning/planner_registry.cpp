@@ -31,6 +31,7 @@ std::unique_ptr<Planner> make_interactive(const PlannerContext& c) {
   PlannerSettings settings = c.settings;
   settings.adaptive_step = 1.0;
   settings.passages = 0.0;
+  settings.guide = 0.0;
   return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, settings, sharing(c));
 }
 std::unique_ptr<Planner> make_irrt(const PlannerContext& c) {

@@ -78,6 +78,16 @@ ParamTable<S> make_table() {
                "0: none",
        .group = "passages"},
       &S::passages));
+  t.push_back(real_param<S>(
+      {.name = "guide",
+       .label = "workspace guide",
+       .min = 0.0,
+       .max = 1.0,
+       .help = "RRT-Connect's share of samples, after its first 200 iterations, drawn along a "
+               "route of the part from the start to the goal through the workspace's free space "
+               "(found on the distance grid); 0: none",
+       .group = "passages"},
+      &S::guide));
   t.push_back(
       real_param<S>({.name = "goal_bias",
                      .label = "goal bias",

@@ -35,6 +35,9 @@ struct PlannerSettings {
   /// RRT-Connect's share of iterations, after its first kPassageWarmup, that aim at passage
   /// islands (passage_islands.hpp); 0: none.
   double passages = 0.1;
+  /// RRT-Connect's share of uniform samples, after its first GuidedSampler::kGuideWarmup
+  /// iterations, drawn along a workspace guide (sampling/guided_sampler.hpp); 0: none.
+  double guide = 0.75;
   /// RRT's and the I-RRT's probability of extending toward the goal, in [0, 1].
   double goal_bias = 0.05;
   /// The run's only source of randomness.

@@ -3,8 +3,21 @@
 #include <optional>
 
 #include "tandem/planning/extend.hpp"
+#include "tandem/sampling/guided_sampler.hpp"
 
 namespace tandem {
+namespace {
+
+/// The computer alone's samples: along the workspace guide for a share `guide`, else uniform.
+std::unique_ptr<TargetSampler> computer_alone(MotionValidator& validator, const Config& start,
+                                              const Config& goal, const PlannerSettings& settings) {
+  if (settings.guide > 0.0)
+    return std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start, goal,
+                                           settings.guide);
+  return std::make_unique<UniformSampler>(validator.space());
+}
+
+}  // namespace
 
 RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Config& goal,
                        const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler)
@@ -14,7 +27,7 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       start_steps_(range_, adaptive_floor(settings)),
       goal_steps_(range_, adaptive_floor(settings)),
       sampler_(sampler != nullptr ? std::move(sampler)
-                                  : std::make_unique<UniformSampler>(validator.space())) {
+                                  : computer_alone(validator, start, goal, settings)) {
   attach(start_tree_);
   attach(goal_tree_);
   if (settings.passages > 0.0)

@@ -8,7 +8,9 @@
 // sampling/authority_sharing.hpp).
 //
 // Each iteration:
-//   1. targets <- the sampler's targets for this iteration (one q_rand, or N contact samples)
+//   1. targets <- the sampler's targets for this iteration (one q_rand, or N contact samples);
+//      the computer alone's q_rand is, for a share `guide` of its iterations after a warm-up,
+//      drawn along a workspace guide (sampling/guided_sampler.hpp)
 //   2. for each target q:
 //        Add_Tree: q_new <- EXTEND(T_a, q), by q_near's adaptive step (adaptive_step.hpp; a
 //                  fixed step for the interactive planners); if TRAPPED, next target

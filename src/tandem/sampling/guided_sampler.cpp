@@ -1,0 +1,56 @@
+#include "tandem/sampling/guided_sampler.hpp"
+
+#include <algorithm>
+
+namespace tandem {
+
+GuidedSampler::GuidedSampler(const SE3Space& space, const CollisionChecker& checker,
+                             const Config& start, const Config& goal, double share)
+    : space_(space), checker_(checker), start_(start.t), goal_(goal.t), share_(share) {}
+
+void GuidedSampler::find() {
+  guide_.emplace();
+  const DistanceGrid* grid = checker_.distance_grid();
+  if (grid == nullptr || space_.planar())
+    return;
+  const double open = checker_.object_extent().half_extents.maxCoeff();
+  least_spread_ = 0.1 * open;
+  *guide_ = find_guide(*grid, space_.bounds(), start_, goal_, open);
+  double s = 0.0;
+  for (std::size_t k = 0; k < guide_->size(); ++k) {
+    if (k > 0)
+      s += ((*guide_)[k].point - (*guide_)[k - 1].point).norm();
+    length_.push_back(s);
+  }
+  if (guide_->size() < 2 || !(s > 0.0))
+    guide_->clear();
+}
+
+void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& out) {
+  Rng& rng = *request.rng;
+  if (share_ > 0.0 && request.iteration >= kGuideWarmup && !guide_)
+    find();
+  Config q = space_.sample_uniform(rng);
+  if (guide_ && !guide_->empty() && rng.uniform01() < share_)
+    q.t = along(rng);
+  out.push_back({q, NodeSource::random});
+}
+
+Eigen::Vector3d GuidedSampler::along(Rng& rng) {
+  const std::vector<GuidePoint>& g = *guide_;
+  const double s = rng.uniform(0.0, length_.back());
+  const std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
+      std::upper_bound(length_.begin(), length_.end(), s) - length_.begin(), 1,
+      static_cast<std::ptrdiff_t>(g.size()) - 1));
+  const double span = length_[k] - length_[k - 1];
+  const double u = span > 0.0 ? (s - length_[k - 1]) / span : 0.0;
+  const Eigen::Vector3d p = g[k - 1].point + u * (g[k].point - g[k - 1].point);
+  const double spread =
+      std::max(least_spread_, g[k - 1].clearance + u * (g[k].clearance - g[k - 1].clearance));
+  const Eigen::Vector3d moved =
+      p + spread * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian());
+  const Bounds& b = space_.bounds();
+  return moved.cwiseMax(b.min).cwiseMin(b.max);
+}
+
+}  // namespace tandem

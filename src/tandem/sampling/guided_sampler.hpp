@@ -1,0 +1,57 @@
+#pragma once
+// The computer alone's samples, part of them along a workspace guide (collision/workspace_guide.hpp):
+// a route of the part's reference point from the start to the goal through the workspace's free
+// space, found on the distance grid.
+//
+// Each iteration, after the first kGuideWarmup (most problems are solved sooner, and finding the
+// guide costs a few milliseconds):
+//   1. with probability `share`, a point drawn uniformly along the guide (by length), moved by a
+//      Gaussian of the guide's clearance there (at least a tenth of the part's longest half
+//      extent) and kept in the bounds, is the sample's position; its orientation is uniform;
+//   2. otherwise a uniform sample, as without a guide.
+// A sample is only a target: the planner checks every configuration and motion it adds, so the
+// guide changes where the trees grow, never what is valid. Where the grid does not join the start
+// to the goal (or there is no grid, or the space is planar), every sample is uniform.
+//
+// Determinism: every draw comes from the planner's sampling stream, in the planner's order.
+// Threading: sample() runs on the planner thread only.
+
+#include <optional>
+#include <vector>
+
+#include "tandem/collision/collision_checker.hpp"
+#include "tandem/collision/workspace_guide.hpp"
+#include "tandem/sampling/target_sampler.hpp"
+
+namespace tandem {
+
+class GuidedSampler final : public TargetSampler {
+ public:
+  /// Iterations with uniform samples only, before the guide is found.
+  static constexpr std::uint64_t kGuideWarmup = 200;
+
+  GuidedSampler(const SE3Space& space, const CollisionChecker& checker, const Config& start,
+                const Config& goal, double share);
+  void sample(const SampleRequest& request, std::vector<Target>& out) override;
+
+  /// The guide, once found (empty when there is none).
+  const std::vector<GuidePoint>& guide() const { return guide_ ? *guide_ : kNoGuide; }
+
+ private:
+  inline static const std::vector<GuidePoint> kNoGuide;
+
+  void find();
+  /// Step 1's position, s along the guide's length.
+  Eigen::Vector3d along(Rng& rng);
+
+  const SE3Space& space_;
+  const CollisionChecker& checker_;
+  Eigen::Vector3d start_;
+  Eigen::Vector3d goal_;
+  double share_;
+  double least_spread_ = 0.0;
+  std::optional<std::vector<GuidePoint>> guide_;
+  std::vector<double> length_;  ///< the guide's length up to each point
+};
+
+}  // namespace tandem

@@ -1,0 +1,94 @@
+// The workspace guide on the distance grid: a route through a wall's hole, through the wider of two
+// holes, none through a closed wall, and none over a wall's top when the bounds leave no room there.
+
+#include "tandem/collision/workspace_guide.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace tandem {
+namespace {
+
+/// A wall across the whole grid at z = 0 (0.2 thick), with a square hole of half width `half`
+/// centred at (x, 0) for each x in `holes`.
+std::vector<DistanceGrid::Box> wall(double half, const std::vector<double>& holes) {
+  if (holes.empty())
+    return {{{-5, -5, -0.1}, {5, 5, 0.1}}};
+  std::vector<DistanceGrid::Box> boxes{{{-5, -5, -0.1}, {5, -half, 0.1}},
+                                       {{-5, half, -0.1}, {5, 5, 0.1}}};
+  double x0 = -5.0;
+  for (double x : holes) {
+    boxes.push_back({{x0, -half, -0.1}, {x - half, half, 0.1}});
+    x0 = x + half;
+  }
+  boxes.push_back({{x0, -half, -0.1}, {5, half, 0.1}});
+  return boxes;
+}
+
+const Bounds kBounds{{-3, -3, -3}, {3, 3, 3}};
+
+/// The guide's points within 0.15 of the wall's plane.
+std::vector<GuidePoint> at_the_wall(const std::vector<GuidePoint>& guide) {
+  std::vector<GuidePoint> near;
+  for (const GuidePoint& g : guide) {
+    if (std::abs(g.point.z()) < 0.15)
+      near.push_back(g);
+  }
+  return near;
+}
+
+TEST(WorkspaceGuide, TheRouteGoesThroughTheHole) {
+  const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, wall(0.4, {1.5}));
+  const std::vector<GuidePoint> guide = find_guide(grid, kBounds, {-1, 0, -2}, {-1, 0, 2}, 1.0);
+  ASSERT_GE(guide.size(), 3u);
+  EXPECT_TRUE(guide.front().point.isApprox(Eigen::Vector3d(-1, 0, -2)));
+  EXPECT_TRUE(guide.back().point.isApprox(Eigen::Vector3d(-1, 0, 2)));
+  const std::vector<GuidePoint> crossing = at_the_wall(guide);
+  ASSERT_FALSE(crossing.empty()) << "a route from below the wall to above it crosses its plane";
+  for (const GuidePoint& g : crossing) {
+    EXPECT_NEAR(g.point.x(), 1.5, 0.4) << g.point.transpose();
+    EXPECT_NEAR(g.point.y(), 0.0, 0.4) << g.point.transpose();
+    EXPECT_GT(g.clearance, 0.0);
+  }
+  for (std::size_t k = 1; k + 1 < guide.size(); ++k)
+    EXPECT_TRUE(kBounds.contains(guide[k].point)) << guide[k].point.transpose();
+}
+
+TEST(WorkspaceGuide, TheWiderOfTwoHolesIsTaken) {
+  // The narrow hole is right under the straight line; the wide one is 2 units aside.
+  const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, wall(0.0, {}));
+  const DistanceGrid holes({kBounds.min, kBounds.max}, 0.05, {}, [] {
+    std::vector<DistanceGrid::Box> b = {
+        {{-5, -5, -0.1}, {5, -0.6, 0.1}},       // y < -0.6
+        {{-5, 0.6, -0.1}, {5, 5, 0.1}},         // y > 0.6
+        {{-5, -0.6, -0.1}, {-0.15, 0.6, 0.1}},  // narrow hole at x = 0
+        {{0.15, -0.6, -0.1}, {1.4, 0.6, 0.1}},  // wide hole at x = 2
+        {{2.6, -0.6, -0.1}, {5, 0.6, 0.1}}};
+    return b;
+  }());
+  const std::vector<GuidePoint> guide = find_guide(holes, kBounds, {0, 0, -2}, {0, 0, 2}, 1.0);
+  const std::vector<GuidePoint> crossing = at_the_wall(guide);
+  ASSERT_FALSE(crossing.empty());
+  for (const GuidePoint& g : crossing)
+    EXPECT_NEAR(g.point.x(), 2.0, 0.6) << g.point.transpose();
+  EXPECT_TRUE(find_guide(grid, kBounds, {0, 0, -2}, {0, 0, 2}, 1.0).empty())
+      << "a closed wall leaves no route";
+}
+
+TEST(WorkspaceGuide, TheRouteStaysInTheBounds) {
+  // A wall across x = 0 up to z = 1; above it there is room only if the bounds reach above 1.
+  const std::vector<DistanceGrid::Box> low_wall = {{{-0.1, -5, -5}, {0.1, 5, 1}}};
+  const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, low_wall);
+  const std::vector<GuidePoint> over = find_guide(grid, kBounds, {-2, 0, 0}, {2, 0, 0}, 1.0);
+  ASSERT_FALSE(over.empty());
+  double highest = -10.0;
+  for (const GuidePoint& g : over)
+    highest = std::max(highest, g.point.z());
+  EXPECT_GT(highest, 1.0) << "the route passes over the wall";
+  const Bounds below{{-3, -3, -3}, {3, 3, 0.8}};
+  EXPECT_TRUE(find_guide(grid, below, {-2, 0, 0}, {2, 0, 0}, 1.0).empty());
+}
+
+}  // namespace
+}  // namespace tandem

@@ -1,0 +1,119 @@
+// The workspace-guided sampler on Twistycool (a part that must pass a wall's hole): its guide
+// crosses the wall through the hole, its samples follow the guide for the share asked, and before
+// its warm-up, or with a share of 0, it draws exactly the uniform samples.
+
+#include "tandem/sampling/guided_sampler.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "support/test_support.hpp"
+#include "tandem/collision/distance_grid.hpp"
+#include "tandem/collision/motion_validator.hpp"
+#include "tandem/scene/ompl_app_problem.hpp"
+
+namespace tandem {
+namespace {
+
+class GuidedSamplerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    TANDEM_REQUIRE_SHARED_DATA();
+    problem_.emplace(load_ompl_app_problem(test::shared_dir() / "benchmarks" / "omplapp" / "3D" /
+                                           "Twistycool.cfg"));
+    checker_.emplace(problem_->scene);
+    validator_.emplace(problem_->space, *checker_);
+    validator_->configure({MotionValidation::exact, 0.0, true});
+  }
+  GuidedSampler sampler(double share) const {
+    return GuidedSampler(problem_->space, *checker_, problem_->start, problem_->goal, share);
+  }
+  /// One sample at `iteration` from `rng`.
+  static Config draw(GuidedSampler& s, std::uint64_t iteration, Rng& rng) {
+    std::vector<Target> out;
+    s.sample({iteration, nullptr, &rng}, out);
+    EXPECT_EQ(out.size(), 1u);
+    return out.front().q;
+  }
+  /// The distance from p to the guide's polyline.
+  static double off_guide(const std::vector<GuidePoint>& g, const Eigen::Vector3d& p) {
+    double best = 1e300;
+    for (std::size_t k = 1; k < g.size(); ++k) {
+      const Eigen::Vector3d a = g[k - 1].point, d = g[k].point - a;
+      const double u = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+      best = std::min(best, (a + u * d - p).norm());
+    }
+    return best;
+  }
+
+  std::optional<Problem> problem_;
+  std::optional<CollisionChecker> checker_;
+  std::optional<MotionValidator> validator_;
+};
+
+TEST_F(GuidedSamplerTest, TheGuideCrossesTheWallThroughTheHole) {
+  GuidedSampler s = sampler(0.75);
+  Rng rng(3);
+  draw(s, GuidedSampler::kGuideWarmup, rng);
+  const std::vector<GuidePoint>& guide = s.guide();
+  ASSERT_GE(guide.size(), 3u);
+  EXPECT_TRUE(guide.front().point.isApprox(problem_->start.t));
+  EXPECT_TRUE(guide.back().point.isApprox(problem_->goal.t));
+  // Every point between the ends is free space as the grid bounds it, so where the route crosses
+  // the wall between the start and the goal (z from -200 to -400) it is in the hole.
+  const DistanceGrid& grid = *checker_->distance_grid();
+  for (std::size_t k = 1; k + 1 < guide.size(); ++k) {
+    EXPECT_GT(guide[k].clearance, 0.0);
+    EXPECT_GT(grid.lower_bound(guide[k].point), 0.0) << guide[k].point.transpose();
+    EXPECT_TRUE(problem_->space.bounds().contains(guide[k].point));
+  }
+}
+
+TEST_F(GuidedSamplerTest, SamplesFollowTheGuideForTheShareAsked) {
+  GuidedSampler s = sampler(1.0);
+  Rng rng(5);
+  draw(s, GuidedSampler::kGuideWarmup, rng);
+  double widest = 0.0;
+  for (const GuidePoint& g : s.guide())
+    widest = std::max(widest, g.clearance);
+  widest = std::max(widest, 0.1 * checker_->object_extent().half_extents.maxCoeff());
+  int near = 0;
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const Config q = draw(s, GuidedSampler::kGuideWarmup + 1, rng);
+    EXPECT_TRUE(problem_->space.bounds().contains(q.t));
+    EXPECT_NEAR(q.q.norm(), 1.0, 1e-9);
+    near += off_guide(s.guide(), q.t) < 4.0 * widest ? 1 : 0;
+  }
+  EXPECT_GT(near, 0.99 * n) << "a Gaussian of the guide's clearance stays within 4 of its sigmas";
+  // Uniform samples spread over the bounds: far fewer are that near a route of one corridor.
+  Rng uniform_rng(5);
+  int uniform_near = 0;
+  for (int i = 0; i < n; ++i)
+    uniform_near += off_guide(s.guide(), problem_->space.sample_uniform(uniform_rng).t) < widest;
+  int guided_near = 0;
+  for (int i = 0; i < n; ++i)
+    guided_near += off_guide(s.guide(), draw(s, GuidedSampler::kGuideWarmup + 1, rng).t) < widest;
+  EXPECT_GT(guided_near, 2 * uniform_near);
+}
+
+TEST_F(GuidedSamplerTest, BeforeTheWarmUpOrWithoutAShareItDrawsTheUniformSamples) {
+  for (double share : {0.0, 0.75}) {
+    GuidedSampler s = sampler(share);
+    UniformSampler uniform(problem_->space);
+    Rng a(11), b(11);
+    const std::uint64_t last =
+        share == 0.0 ? 3 * GuidedSampler::kGuideWarmup : GuidedSampler::kGuideWarmup;
+    for (std::uint64_t i = 0; i < last; ++i) {
+      const Config q = draw(s, i, a);
+      std::vector<Target> out;
+      uniform.sample({i, nullptr, &b}, out);
+      ASSERT_TRUE(q.t == out.front().q.t && q.q.coeffs() == out.front().q.q.coeffs()) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tandem
