@@ -1,6 +1,7 @@
 // The workspace-guided sampler on Twistycool (a part that must pass a wall's hole): its guide
-// crosses the wall through the hole, its samples follow the guide for the share asked, and before
-// its warm-up, or with a share of 0, it draws exactly the uniform samples.
+// crosses the wall through the hole, its samples follow the guide for the share asked, it retires
+// as long after the trees cover the guide as they took to, and before its warm-up, or with a share
+// of 0, it draws exactly the uniform samples.
 
 #include "tandem/sampling/guided_sampler.hpp"
 
@@ -97,6 +98,35 @@ TEST_F(GuidedSamplerTest, SamplesFollowTheGuideForTheShareAsked) {
   for (int i = 0; i < n; ++i)
     guided_near += off_guide(s.guide(), draw(s, GuidedSampler::kGuideWarmup + 1, rng).t) < widest;
   EXPECT_GT(guided_near, 2 * uniform_near);
+}
+
+TEST_F(GuidedSamplerTest, OnceTheTreesCoverTheGuideItGuidesAsLongAgainThenRetires) {
+  GuidedSampler s = sampler(1.0);
+  Rng rng(7);
+  draw(s, GuidedSampler::kGuideWarmup, rng);
+  ASSERT_GE(s.guide().size(), 3u);
+  // Nodes far from the guide cover nothing; nodes on every point cover it all.
+  s.cover(problem_->space.bounds().max);
+  EXPECT_TRUE(s.covering());
+  for (const GuidePoint& g : s.guide())
+    s.cover(g.point);
+  EXPECT_FALSE(s.covering());
+  // Covered at iteration 1000: still guided up to 1999 (share 1: every sample near the guide)...
+  draw(s, 1000, rng);
+  double widest = 0.1 * checker_->object_extent().half_extents.maxCoeff();
+  for (const GuidePoint& g : s.guide())
+    widest = std::max(widest, g.clearance);
+  for (std::uint64_t i = 1001; i < 1100; ++i)
+    EXPECT_LT(off_guide(s.guide(), draw(s, i, rng).t), 6.0 * widest) << i;
+  // ... and uniform from 2000 on.
+  Rng same = rng;
+  UniformSampler uniform(problem_->space);
+  for (std::uint64_t i = 2000; i < 2100; ++i) {
+    const Config q = draw(s, i, rng);
+    std::vector<Target> out;
+    uniform.sample({i, nullptr, &same}, out);
+    ASSERT_TRUE(q.t == out.front().q.t && q.q.coeffs() == out.front().q.q.coeffs()) << i;
+  }
 }
 
 TEST_F(GuidedSamplerTest, BeforeTheWarmUpOrWithoutAShareItDrawsTheUniformSamples) {

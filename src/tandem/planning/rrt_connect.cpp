@@ -3,21 +3,8 @@
 #include <optional>
 
 #include "tandem/planning/extend.hpp"
-#include "tandem/sampling/guided_sampler.hpp"
 
 namespace tandem {
-namespace {
-
-/// The computer alone's samples: along the workspace guide for a share `guide`, else uniform.
-std::unique_ptr<TargetSampler> computer_alone(MotionValidator& validator, const Config& start,
-                                              const Config& goal, const PlannerSettings& settings) {
-  if (settings.guide > 0.0)
-    return std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start, goal,
-                                           settings.guide);
-  return std::make_unique<UniformSampler>(validator.space());
-}
-
-}  // namespace
 
 RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Config& goal,
                        const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler)
@@ -26,10 +13,18 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       goal_tree_(validator.space(), settings.nearest_neighbors, goal),
       start_steps_(range_, adaptive_floor(settings)),
       goal_steps_(range_, adaptive_floor(settings)),
-      sampler_(sampler != nullptr ? std::move(sampler)
-                                  : computer_alone(validator, start, goal, settings)) {
+      sampler_(std::move(sampler)) {
   attach(start_tree_);
   attach(goal_tree_);
+  // The computer alone: along the workspace guide for a share `guide`, else uniform samples.
+  if (sampler_ == nullptr && settings.guide > 0.0) {
+    auto guided = std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start,
+                                                  goal, settings.guide);
+    guided_ = guided.get();
+    sampler_ = std::move(guided);
+  } else if (sampler_ == nullptr) {
+    sampler_ = std::make_unique<UniformSampler>(validator.space());
+  }
   if (settings.passages > 0.0)
     islands_ = std::make_unique<PassageIslands>(validator,
                                                 Rng(settings.seed ^ 0x6b6b6b6bc2b2ae35ULL).split());
@@ -53,6 +48,7 @@ bool RRTConnect::iterate() {
   }
 
   // 1. The targets.
+  show_new_nodes();
   targets_.clear();
   sampler_->sample({stats().iterations, this, &rng_}, targets_);
   for (const Target& target : targets_) {
@@ -94,6 +90,16 @@ Extension RRTConnect::connect(Tree& tree, const Config& q, NodeSource source) {
     ext = extend(tree, target, range_, validator_, settings_.extend, source);
   } while (ext.status == ExtendStatus::advanced);
   return ext;
+}
+
+void RRTConnect::show_new_nodes() {
+  if (guided_ == nullptr || !guided_->covering())
+    return;
+  const std::array<const Tree*, 2> trees{&start_tree_, &goal_tree_};
+  for (std::size_t side = 0; side < 2; ++side) {
+    for (; shown_[side] < trees[side]->size(); ++shown_[side])
+      guided_->cover(trees[side]->nodes[shown_[side]].t);
+  }
 }
 
 std::uint64_t RRTConnect::queries() {

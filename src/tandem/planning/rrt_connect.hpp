@@ -24,12 +24,14 @@
 // the usual one.
 // The tree to extend alternates between the start and the goal tree, as in OMPL's RRTConnect.
 
+#include <array>
 #include <memory>
 
 #include "tandem/planning/adaptive_step.hpp"
 #include "tandem/planning/extend.hpp"
 #include "tandem/planning/passage_islands.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/sampling/guided_sampler.hpp"
 
 namespace tandem {
 
@@ -61,6 +63,8 @@ class RRTConnect final : public Planner {
   bool passage_turn();
   /// The checker's queries so far (collision, clearance and distance).
   std::uint64_t queries();
+  /// Shows the trees' new nodes to the guided sampler (guided_sampler.hpp, step 3).
+  void show_new_nodes();
   /// Aims T_a at an island's end and, if it gets there, takes the island; true when the trees meet.
   bool aim_at_island(Tree& tree_a, Tree& tree_b, bool a_is_start, const IslandEnd& end);
 
@@ -71,6 +75,10 @@ class RRTConnect final : public Planner {
   AdaptiveStep goal_steps_;
   bool extend_start_tree_ = true;
   std::unique_ptr<TargetSampler> sampler_;
+  /// The computer alone's sampler when it follows a workspace guide (owned by sampler_), else null.
+  GuidedSampler* guided_ = nullptr;
+  /// The nodes of each tree (start, goal) shown to guided_ so far.
+  std::array<std::size_t, 2> shown_{};
   std::vector<Target> targets_;
   /// Null when `passages` is 0 (and for the interactive planners).
   std::unique_ptr<PassageIslands> islands_;

@@ -24,6 +24,20 @@ void GuidedSampler::find() {
   }
   if (guide_->size() < 2 || !(s > 0.0))
     guide_->clear();
+  covered_.assign(guide_->size(), false);
+  uncovered_ = guide_->size();
+}
+
+void GuidedSampler::cover(const Eigen::Vector3d& p) {
+  if (!covering())
+    return;
+  for (std::size_t k = 0; k < guide_->size(); ++k) {
+    const GuidePoint& g = (*guide_)[k];
+    if (!covered_[k] && (g.point - p).norm() <= std::max(least_spread_, g.clearance)) {
+      covered_[k] = true;
+      --uncovered_;
+    }
+  }
 }
 
 void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& out) {
@@ -31,7 +45,11 @@ void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& ou
   if (share_ > 0.0 && request.iteration >= kGuideWarmup && !guide_)
     find();
   Config q = space_.sample_uniform(rng);
-  if (guide_ && !guide_->empty() && rng.uniform01() < share_)
+  if (guide_ && uncovered_ == 0 && retire_at_ == 0)
+    retire_at_ = 2 * request.iteration;
+  const bool guiding =
+      guide_ && !guide_->empty() && (uncovered_ > 0 || request.iteration < retire_at_);
+  if (guiding && rng.uniform01() < share_)
     q.t = along(rng);
   out.push_back({q, NodeSource::random});
 }

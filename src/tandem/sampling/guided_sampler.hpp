@@ -8,7 +8,12 @@
 //   1. with probability `share`, a point drawn uniformly along the guide (by length), moved by a
 //      Gaussian of the guide's clearance there (at least a tenth of the part's longest half
 //      extent) and kept in the bounds, is the sample's position; its orientation is uniform;
-//   2. otherwise a uniform sample, as without a guide.
+//   2. otherwise a uniform sample, as without a guide;
+//   3. once the trees' nodes have covered every point of the guide (a node within the point's
+//      spread), at iteration i, the guide has little more to say: the trees have reached each
+//      other along it, or they have not met for another reason (the alpha puzzle, whose
+//      difficulty is the part's orientation, not the route). It guides as many iterations again,
+//      and from 2i on every sample is uniform.
 // A sample is only a target: the planner checks every configuration and motion it adds, so the
 // guide changes where the trees grow, never what is valid. Where the grid does not join the start
 // to the goal (or there is no grid, or the space is planar), every sample is uniform.
@@ -34,6 +39,11 @@ class GuidedSampler final : public TargetSampler {
                 const Config& goal, double share);
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
 
+  /// Step 3: a node of either tree at p covers the guide's points within their spread of it.
+  void cover(const Eigen::Vector3d& p);
+  /// Whether cover() still has something to do.
+  bool covering() const { return guide_ && uncovered_ > 0; }
+
   /// The guide, once found (empty when there is none).
   const std::vector<GuidePoint>& guide() const { return guide_ ? *guide_ : kNoGuide; }
 
@@ -52,6 +62,9 @@ class GuidedSampler final : public TargetSampler {
   double least_spread_ = 0.0;
   std::optional<std::vector<GuidePoint>> guide_;
   std::vector<double> length_;  ///< the guide's length up to each point
+  std::vector<bool> covered_;
+  std::size_t uncovered_ = 0;
+  std::uint64_t retire_at_ = 0;  ///< step 3's 2i (0 until every point is covered)
 };
 
 }  // namespace tandem
