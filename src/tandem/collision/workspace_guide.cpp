@@ -87,7 +87,7 @@ int block_of(const DistanceGrid& grid, const Blocks& b, const Eigen::Vector3d& p
   return b.index(cell / b.factor);
 }
 
-/// The 26 neighbours of block i inside the grid, with their distances in blocks.
+/// Visits the 26 neighbours of block i that are inside the coarse grid.
 template <class Visit>
 void for_neighbours(const Blocks& b, int i, Visit visit) {
   const Eigen::Vector3i c = b.cell(i);

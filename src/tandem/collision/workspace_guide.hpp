@@ -7,8 +7,9 @@
 // Hsu, "Workspace importance sampling", IROS 2004; Plaku, Kavraki & Vardi, "Motion planning with
 // dynamics by a synergistic combination of layers of planning" (Syclop), IEEE TRO 2010, which
 // leads a tree along a lead of workspace regions). Here:
-//   1. the grid, inside the space's bounds, is coarsened to at most kMaxBlocks blocks; a block stands for its most open cell
-//      (its largest bound), so a hole narrower than a block still joins its neighbours;
+//   1. the grid, inside the space's bounds, is coarsened to at most kMaxGuideBlocks blocks; a
+//      block stands for its most open cell (its largest bound), so a hole narrower than a block
+//      still joins its neighbours;
 //   2. the bottleneck: the largest clearance b such that the start's and the goal's blocks are
 //      joined (26-neighbours) through blocks at least b open, the two end blocks not counted;
 //      blocks the grid does not know to be free (bound <= 0) are walls: no route passes them;

@@ -10,7 +10,7 @@
 // Each iteration:
 //   1. targets <- the sampler's targets for this iteration (one q_rand, or N contact samples);
 //      the computer alone's q_rand is, for a share `guide` of its iterations after a warm-up,
-//      drawn along a workspace guide (sampling/guided_sampler.hpp)
+//      drawn along a workspace guide until the trees have covered it (sampling/guided_sampler.hpp)
 //   2. for each target q:
 //        Add_Tree: q_new <- EXTEND(T_a, q), by q_near's adaptive step (adaptive_step.hpp; a
 //                  fixed step for the interactive planners); if TRAPPED, next target
