@@ -1,5 +1,5 @@
-// The workspace guide on the distance grid: a route through a wall's hole, through the wider of two
-// holes, none through a closed wall, and none over a wall's top when the bounds leave no room there.
+// The workspace guide on the distance grid: a route through a wall's hole, through the wider of
+// two holes, none through a closed wall, and none over a wall's top when the bounds leave no room.
 
 #include "tandem/collision/workspace_guide.hpp"
 

@@ -20,8 +20,8 @@
 //   5. (the computer alone, after kPassageWarmup iterations, while the islands have cost less than
 //      a share `passages` of the collision queries) instead of steps 1-2's targets, an end of a
 //      passage island (passage_islands.hpp): CONNECT(T_a, end); if T_a REACHES it, the island's
-//      chain joins T_a, and CONNECT(T_b, ...) aims at the chain's other end. Without an island to aim at, the iteration is
-// the usual one.
+//      chain joins T_a, and CONNECT(T_b, ...) aims at the chain's other end. Without an island
+//      to aim at, the iteration is the usual one.
 // The tree to extend alternates between the start and the goal tree, as in OMPL's RRTConnect.
 
 #include <array>
