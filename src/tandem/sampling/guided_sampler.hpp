@@ -1,7 +1,7 @@
 #pragma once
 // The computer alone's samples, part of them along a workspace guide
-// (collision/workspace_guide.hpp): a route of the part's reference point from the start to the goal through the workspace's free
-// space, found on the distance grid.
+// (collision/workspace_guide.hpp): a route of the part's reference point from the start to the
+// goal through the workspace's free space, found on the distance grid.
 //
 // Each iteration, after the first kGuideWarmup (most problems are solved sooner, and finding the
 // guide costs a few milliseconds):
