@@ -126,6 +126,29 @@ TEST(ExactMotion, ClearanceBoundsNeverExceedFclsDistanceOnEveryShippedProblem) {
   }
 }
 
+TEST(ExactMotion, AStateFartherThanTheCapIsBoundedByTheCapItselfNotARoundingBelow) {
+  // A bound capped at c for a state farther than c is c exactly: the validator's is_valid asks
+  // for the tolerance and compares with it. (c (1 + e)) / (1 + e) rounded below c for some c, so
+  // free states read as in contact and a planner's path failed its own check.
+  for (const std::string& name : test::shipped_problems()) {
+    SCOPED_TRACE(name);
+    const Problem p = load_problem(name);
+    CollisionChecker checker(p.scene);
+    Rng rng(11);
+    int tried = 0;
+    for (int i = 0; i < 200; ++i) {
+      const Config q = p.space.sample_uniform(rng);
+      const double cap =
+          std::exp(rng.uniform(std::log(1e-8), std::log(1e-3))) * p.space.translation_extent();
+      if (!(checker.nearest_obstacle(q).distance > 2.0 * cap))
+        continue;
+      ++tried;
+      EXPECT_GE(checker.clearance_bound(q, cap, cap), cap) << "cap " << cap;
+    }
+    EXPECT_GT(tried, 0);
+  }
+}
+
 /// Whether the motion collides at any of n equal steps (FCL's yes/no answer).
 bool collides_finely(const SE3Space& space, CollisionChecker& checker, const Config& a,
                      const Config& b, unsigned n) {

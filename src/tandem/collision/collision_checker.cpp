@@ -448,8 +448,11 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
       if (box.distance_to(obstacle.box) >= best)
         continue;
       // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far
-      // apart; what it returns, d, bounds the true distance from below as d / (1 + e).
-      fcl::DistanceResultd result(best * kGrow);
+      // apart; what it returns, d, bounds the true distance from below as d / (1 + e). If it
+      // found nothing closer, d is that start, and best stays: best * (1 + e) / (1 + e) may round
+      // below best, and a state as far as the cap would then read as closer than it.
+      const double start = best * kGrow;
+      fcl::DistanceResultd result(start);
       try {
         fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
                       m.clearance_request, result);
@@ -457,7 +460,8 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
         ++m.counters.fcl_errors;
         return 0.0;
       }
-      best = std::min(best, result.min_distance / kGrow);
+      if (result.min_distance < start)
+        best = std::min(best, result.min_distance / kGrow);
       if (best <= 0.0)
         return best;
     }
