@@ -25,6 +25,9 @@ struct InteractiveArgs {
   bool paused = false;
   bool exit_when_done = false;
   std::optional<double> linger;  ///< seconds to wait for a browser after the planner ends
+  /// With the viewer: the planner starts when the first browser connects (or after --linger
+  /// seconds without one), so that a person sees the trees grow from the start.
+  bool wait_for_browser = false;
   std::string session;
   double operator_rate = 1000.0;
   double digest_every = 2.0;
@@ -46,10 +49,23 @@ std::string default_session_file(const Problem& problem) {
   return "sessions/" + problem.name + "-" + stamp + ".jsonl";
 }
 
-/// What the browser may do to a live session.
+/// What the browser may do to a live session; it may also start a session that waits for one.
+///
+/// Threading: handle() and connected() on the server's thread, the rest on the planner's.
 class LiveControl final : public ViewerControl {
  public:
-  explicit LiveControl(LiveSession& session) : session_(session) {}
+  LiveControl(LiveSession& session, bool wait_for_browser)
+      : session_(session), waiting_(wait_for_browser) {}
+
+  /// Whether the session still waits for its first browser.
+  bool waiting() const { return waiting_.load(); }
+  /// Starts a session that waits (once).
+  void start() {
+    if (waiting_.exchange(false))
+      session_.resume();
+  }
+  void connected() override { start(); }
+
   std::optional<std::string> handle(const ClientMessage& m) override {
     switch (m.kind) {
       case ClientMessage::Kind::pose:
@@ -82,6 +98,7 @@ class LiveControl final : public ViewerControl {
 
  private:
   LiveSession& session_;
+  std::atomic<bool> waiting_;
 };
 
 /// The run a live session makes: a planner that takes an operator, 600 s unless told otherwise.
@@ -108,16 +125,16 @@ LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
   options.operator_rate_hz = args.operator_rate;
   options.digest_every_s = args.digest_every;
   options.stay = !args.headless && !args.exit_when_done;
-  options.start_paused = args.paused;
+  options.start_paused = args.paused || (args.wait_for_browser && !args.headless);
   return options;
 }
 
 /// The viewer of a session: its state, the session's controls and the server, alive together.
 struct Viewer {
-  Viewer(const Problem& problem, LiveSession& session, const ViewerArgs& args)
+  Viewer(const Problem& problem, LiveSession& session, const InteractiveArgs& args)
       : state(problem, session.spec().mode, false),
-        control(session),
-        server(state, control, server_options(args)) {
+        control(session, args.wait_for_browser && !args.paused),
+        server(state, control, server_options(args.viewer)) {
     session.set_observer(&state);
   }
   ViewerState state;
@@ -125,13 +142,31 @@ struct Viewer {
   ViewerServer server;
 };
 
+/// Called each second while the session waits for its first browser: starts it after --linger
+/// seconds without one. Whether it still waits.
+bool waits_for_browser(const InteractiveArgs& args, const std::unique_ptr<Viewer>& viewer,
+                       double& waited_s) {
+  if (!viewer || !viewer->control.waiting())
+    return false;
+  waited_s += 1.0;
+  if (!args.linger || waited_s <= *args.linger)
+    return true;
+  std::cout << "  no browser in " << static_cast<int>(*args.linger) << " s: planning without one\n"
+            << std::flush;
+  viewer->control.start();
+  return false;
+}
+
 /// Prints progress each second; once the planner has ended, ends the session after --linger
 /// seconds without a browser.
 std::function<void(const LiveProgress&)> progress_printer(InteractiveArgs& args,
                                                           LiveSession& session,
                                                           const std::unique_ptr<Viewer>& viewer) {
   auto announced_end = std::make_shared<bool>(false);
-  return [&args, &session, &viewer, announced_end](const LiveProgress& p) {
+  auto waited_s = std::make_shared<double>(0.0);
+  return [&args, &session, &viewer, announced_end, waited_s](const LiveProgress& p) {
+    if (waits_for_browser(args, viewer, *waited_s))
+      return;
     if (p.status != PlannerStatus::running) {
       if (!*announced_end) {
         *announced_end = true;
@@ -187,8 +222,10 @@ int run_interactive(InteractiveArgs args) {
     std::cout << "  " << input.spacemouse_status << '\n';
   std::unique_ptr<Viewer> viewer;
   if (!args.headless) {
-    viewer = std::make_unique<Viewer>(problem, session, args.viewer);
+    viewer = std::make_unique<Viewer>(problem, session, args);
     std::cout << "  viewer: " << viewer->server.url() << "  (Ctrl-C ends the session)\n";
+    if (viewer->control.waiting())
+      std::cout << "  the planner starts when a browser opens the viewer\n";
   }
   std::cout << std::flush;
 
@@ -253,13 +290,18 @@ Command add_demo_command(CLI::App& app) {
   app.add_option("--session", args->session,
                  "Journal the session here (default sessions/NAME-TIME.jsonl)");
   app.footer(
-      "The built-in environment 1 (cluttered-1) with contact sampling: an experienced simulated\n"
-      "operator moves the part along the scene's guide until you take over in the viewer (drag "
-      "the\npart, or use the keyboard, a gamepad or a SpaceMouse). Prints the viewer's URL; "
-      "Ctrl-C\nends the session, whose journal 'tandem replay' reproduces exactly.");
+      "The built-in assembly scene shaft-bores, where the computer alone does not get through in "
+      "a\nminute: a shaft slid through the tight bores of two bearing housings, with contact "
+      "sampling\n(alpha 0.5). An experienced simulated operator moves the shaft along the scene's "
+      "guide until\nyou take over in the viewer (drag the part, or use the keyboard, a gamepad or "
+      "a SpaceMouse).\nPrints the viewer's URL; the planner starts when a browser opens it (at "
+      "once with --headless,\nafter --linger seconds without one). The viewer counts the nodes "
+      "grown toward random samples,\nthe operator and contact samples. Ctrl-C ends the session, "
+      "whose journal 'tandem replay'\nreproduces exactly.");
   return [args] {
-    args->run.problem.problem = "cluttered-1";
+    args->run.problem.problem = "shaft-bores";
     args->run.mode = "interactive-contact";
+    args->wait_for_browser = true;
     if (!args->linger)
       args->linger = 60.0;
     return run_interactive(*args);

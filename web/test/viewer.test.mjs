@@ -97,6 +97,41 @@ async function comparePictures(page, a, b, { background, mark, skip }) {
   }, [a.toString('base64'), b.toString('base64'), background, mark, skip]);
 }
 
+test('the demo waits for a browser, then grows trees with operator and contact nodes until solved', { timeout: 200000 }, async () => {
+  const run = await startTandem(['demo', '--port', '0', '--session', session('demo')]);
+  try {
+    assert.match(run.output, /the planner starts when a browser opens the viewer/);
+    await sleep(2500);
+    assert.doesNotMatch(run.output, /iterations \(/, 'nothing is planned before a browser connects');
+    const page = await openViewer(browser, run);
+    assert.equal((await page.evaluate(() => window.tandem.hello)).problem, 'shaft-bores');
+    // Growing: operator and contact nodes appear, and the tree grows while the page watches.
+    await waitFor(page, () => {
+      const c = window.tandem.counts();
+      return c.bySource[2] > 0 && c.bySource[3] > 0;
+    }, null, 90000);
+    const a = await counts(page);
+    await sleep(1000);
+    const b = await counts(page);
+    assert.ok(b.nodes > a.nodes || (await page.evaluate(() => window.tandem.status.status)) === 'solved',
+      `the trees grow: ${a.nodes} then ${b.nodes} nodes`);
+    await waitFor(page, () => window.tandem.status.status === 'solved', null, 150000);
+    const solved = await page.evaluate(() => window.tandem.status);
+    assert.ok(solved.nodes_by_source[3] > 0, `the solved tree has contact nodes: ${solved.nodes_by_source}`);
+    assert.ok(solved.nodes_by_source[2] > 0, `and operator nodes: ${solved.nodes_by_source}`);
+    // The page says so, with the session's own counts.
+    const text = await page.locator('#status').textContent();
+    assert.match(text, /random \/ operator \/ contact/);
+    const fmt = (n) => n.toLocaleString('en-US').replace(/,/g, '');
+    assert.ok(text.replace(/[\s,\u202f\u00a0]/g, '').includes(
+      `${fmt(solved.nodes_by_source[1])}/${fmt(solved.nodes_by_source[2])}/${fmt(solved.nodes_by_source[3])}`), text);
+    await page.screenshot({ path: artefactPath('demo.png') });
+    assert.deepEqual(page.logs.filter((l) => l.startsWith('page error')), []);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
 test('the layered drawing (software renderer) shows what drawing everything shows; the trees are thinned only while the camera turns', { timeout: 90000 }, async () => {
   const run = await startTandem(live('layers', ['cluttered-2', '--mode', 'interactive', '--alpha', '1', '--operator', 'browser']));
   try {

@@ -9,6 +9,7 @@ void SocketHub::add(const std::shared_ptr<SocketSession>& socket) {
   sockets_.insert(socket);
   clients_.store(sockets_.size());
   connections_.fetch_add(1);
+  control_.connected();
 }
 
 void SocketHub::remove(const std::shared_ptr<SocketSession>& socket) {

@@ -10,7 +10,7 @@
 // browser that disconnects or reads slowly never holds up the planner (see ViewerState).
 //
 // Threading: construct and destroy on one thread; url(), port(), clients() from any thread. The
-// control's handle() is called on the server's thread.
+// control's handle() and connected() are called on the server's thread.
 
 #include <atomic>
 #include <filesystem>
@@ -33,6 +33,8 @@ class ViewerControl {
   virtual InteractionSettings settings() const = 0;
   /// The session's journal, for "save the session" (none for a replay).
   virtual std::optional<std::filesystem::path> journal() const = 0;
+  /// A browser's WebSocket has opened (on the server's thread).
+  virtual void connected() {}
 };
 
 struct ServerOptions {
