@@ -1,7 +1,9 @@
 // The frame loop: each animation frame moves the part by the operator's devices or to the
 // operator's configuration, and draws a frame only when something changed, at most maxfps times a
 // second (0: no cap), so that a software renderer leaves the planner its core. It keeps the
-// latest `operator` message (the contact plane, the guidance force) and counts frames.
+// latest `operator` message (the contact plane, the guidance force) and counts frames. The frames
+// come from the renderer's animation loop: the window's, or the headset's while in VR, where every
+// frame is drawn.
 
 export class FrameLoop {
   /**
@@ -13,6 +15,7 @@ export class FrameLoop {
     this.maxfps = maxfps;
     this.input = null;
     this.playback = null;
+    this.xr = null;
     this.dirty = true;
     this.operator = null; // the last `operator` message
     this.redrawAlways = false; // a frame every time, for measuring
@@ -34,15 +37,15 @@ export class FrameLoop {
     this.dirty = true;
   }
 
-  /** Runs the loop, with the OperatorInput and the Playback. */
-  start(input, playback) {
+  /** Runs the loop, with the OperatorInput, the Playback and the VrOperator. */
+  start(input, playback, xr) {
     this.input = input;
     this.playback = playback;
-    requestAnimationFrame(this.frame);
+    this.xr = xr;
+    this.view.layers.renderer.setAnimationLoop(this.frame);
   }
 
   frame(now) {
-    requestAnimationFrame(this.frame);
     const dt = Math.min((now - this.lastFrame) / 1000, 0.1);
     this.lastFrame = now;
     this.update(dt, now);
@@ -62,6 +65,7 @@ export class FrameLoop {
     input.integrate(dt, now);
     if (view.orbit.autoRotate) view.orbit.update(dt);
     input.follow(this.operator, now);
+    this.xr.update(now, this.operator);
     if (now - this.fpsSince >= 1000) {
       this.fps = (1000 * this.fpsFrames) / (now - this.fpsSince);
       this.fpsFrames = 0;
@@ -71,6 +75,7 @@ export class FrameLoop {
 
   /** Whether a frame is drawn now: something to draw, and not within the cap's interval. */
   due(now) {
+    if (this.xr.presenting) return true;
     const wanted = this.dirty || this.input.dragging || this.playback.playing || this.redrawAlways
       || this.view.layers.needsFrame(now);
     return wanted && !(this.maxfps > 0 && now - this.lastRender < 1000 / this.maxfps - 2);

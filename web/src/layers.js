@@ -90,6 +90,18 @@ export class FrameRenderer {
   /** Draws a frame of the scene, whose trees (`Trees`, their group in staticRoot) are `trees`. */
   render(trees, now) {
     const { renderer, scene, camera } = this;
+    if (renderer.xr.isPresenting) {
+      // In VR: everything, every frame, into the headset's views.
+      this.dynamicRoot.visible = this.staticRoot.visible = true;
+      trees.setRange('all');
+      const autoClear = renderer.autoClear;
+      renderer.autoClear = true;
+      renderer.render(scene, camera);
+      renderer.autoClear = autoClear;
+      this.drawnEdges = trees.edgeCount();
+      this.valid = false;
+      return;
+    }
     if (!this.layered) {
       trees.setRange('all');
       renderer.render(scene, camera);

@@ -14,6 +14,7 @@ import { TuningPanel } from './tuning-panel.js';
 import { Playback } from './playback.js';
 import { OperatorInput } from './operator-input.js';
 import { FrameLoop } from './frame-loop.js';
+import { VrOperator } from './xr.js';
 import { exposePageApi } from './page-api.js';
 
 function start(query) {
@@ -48,13 +49,14 @@ function start(query) {
     touch();
     return ok;
   };
-  exposePageApi({ connection, view, loop, panel, input, playback, hello: () => hello });
+  const xr = new VrOperator(view, input, { notify });
+  exposePageApi({ connection, view, loop, panel, input, playback, xr, hello: () => hello });
   connection.scene()
     .then((s) => {
       panel.setProblem(s.name);
       view.load(s);
       connection.open({ nodes, messages, state: (text, cls) => panel.setConnection(text, cls) });
-      loop.start(input, playback);
+      loop.start(input, playback, xr);
     })
     .catch((err) => { panel.setConnection(String(err.message ?? err), 'bad'); });
 }

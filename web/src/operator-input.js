@@ -54,12 +54,17 @@ export class OperatorInput {
     this.hid = new SpaceMouseHID((text) => notify(text, 'ok'));
     this.devices = [new Keyboard(window), new Gamepads(), this.hid];
     this.dragging = false;
+    this.holding = false; // a VR controller holds the part (xr.js)
+    this.inputInControl = null; // the status's input
     this.drivingUntil = 0;
     this.wireGizmo();
     this.wireControls(notify);
   }
 
   get latencies() { return this.poses.latencies.slice(); }
+
+  /** Whether the browser is the input in control (the server's last status says). */
+  get inControl() { return this.inputInControl === 'browser'; }
 
   wireGizmo() {
     const { gizmo, orbit } = this.view;
@@ -92,11 +97,11 @@ export class OperatorInput {
     if (!SpaceMouseHID.available()) $('webhid').disabled = true;
   }
 
-  /** The browser moved the part: it holds it for a while, and sends its pose if due. */
-  moved(now) {
+  /** The browser moved the part: it holds it for a while, and sends its pose if due (or at once). */
+  moved(now, immediately = false) {
     this.drivingUntil = now + HOLD_MS;
     this.touch();
-    if (this.poses.due(now)) this.poses.post(this.view.partPose(), now);
+    if (immediately || this.poses.due(now)) this.poses.post(this.view.partPose(), now);
   }
 
   /** Moves the part by the devices' velocities over dt seconds. */
@@ -118,12 +123,13 @@ export class OperatorInput {
 
   /** The part at the operator's configuration (an `operator` message), unless the browser holds it. */
   follow(op, now) {
-    if (op && !this.dragging && now > this.drivingUntil) this.view.setPartPose(op.q);
+    if (op && !this.dragging && !this.holding && now > this.drivingUntil) this.view.setPartPose(op.q);
   }
 
   /** A `status` message: the input in control and those available; a replay takes no input. */
   onStatus(m) {
     this.poses.onStatus(m);
+    this.inputInControl = m.input;
     const select = $('input');
     if (m.input && document.activeElement !== select) select.value = m.input;
     select.querySelector('[value=spacemouse]').disabled = !m.spacemouse_available;

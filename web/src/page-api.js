@@ -3,9 +3,10 @@
 
 /**
  * @param parts the page's pieces: `connection`, `view` (SceneView), `loop` (FrameLoop), `panel`
- *   (StatusPanel), `input` (OperatorInput), `playback`, `hello` (() => the last hello message)
+ *   (StatusPanel), `input` (OperatorInput), `playback`, `xr` (VrOperator), `hello` (() => the
+ *   last hello message)
  */
-export function exposePageApi({ connection, view, loop, panel, input, playback, hello }) {
+export function exposePageApi({ connection, view, loop, panel, input, playback, xr, hello }) {
   window.tandem = {
     get connected() { return connection.connected; },
     get hello() { return hello(); },
@@ -32,5 +33,13 @@ export function exposePageApi({ connection, view, loop, panel, input, playback, 
      * over the trees (layers.js): the part, the start and goal ghosts, transparent obstacles. */
     overlaidBoxes: () => view.overlaidObjects().map((o) => view.screenBoxOf(o)),
     screenBoxOf: (object) => view.screenBoxOf(object),
+    /** The VR operator: in VR, holding the part, pulses and rumbles sent, a scene point in VR. */
+    xr: {
+      get presenting() { return xr.presenting; },
+      get holding() { return xr.holding !== null; },
+      get pulses() { return xr.pulses; },
+      get rumbles() { return xr.rumbles; },
+      pointOf: (x, y, z) => xr.xrPointOf(x, y, z),
+    },
   };
 }

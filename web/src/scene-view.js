@@ -120,6 +120,7 @@ export class SceneView {
     ghost(s.goal, [0.3, 1, 0.5, 1]);
     setPose(this.part, s.start);
     this.extent = s.extent;
+    this.bounds = s.bounds;
     this.frame(s.bounds);
     this.gizmo.attach(this.part);
   }

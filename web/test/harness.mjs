@@ -73,9 +73,12 @@ export async function launchBrowser() {
   });
 }
 
-export async function openViewer(browser, run, { viewport = { width: 1280, height: 800 }, query = '' } = {}) {
+/** Opens the viewer of `run` in a new page; `init`: scripts (addInitScript's arguments) that run
+ * in the page before its own. */
+export async function openViewer(browser, run, { viewport = { width: 1280, height: 800 }, query = '', init = [] } = {}) {
   const page = await browser.newPage({ viewport });
   openPages.add(page);
+  for (const script of init) await page.addInitScript(script);
   const logs = [];
   page.on('console', (m) => logs.push(m.text()));
   page.on('pageerror', (e) => logs.push(`page error: ${e.message}`));

@@ -132,6 +132,98 @@ test('the demo waits for a browser, then grows trees with operator and contact n
   }
 });
 
+/** The page's scripts that make an emulated Meta Quest 3 (IWER) the browser's WebXR runtime. */
+const emulatedHeadset = [
+  { path: path.join(path.dirname(new URL(import.meta.url).pathname), '..', 'node_modules', 'iwer', 'build', 'iwer.min.js') },
+  () => {
+    window.xrDevice = new IWER.XRDevice(IWER.metaQuest3);
+    window.xrDevice.installRuntime({ forceInstall: true }); // over Chromium's own navigator.xr
+  },
+];
+
+const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+const turn = (a, b) => 2 * Math.acos(Math.min(1, Math.abs(a[3] * b[3] + a[4] * b[4] + a[5] * b[5] + a[6] * b[6])));
+
+test('in VR (an emulated headset) the grip holds the part, operator nodes grow where the hand moved it, letting go leaves it; contact is felt', { timeout: 120000 }, async () => {
+  const run = await startTandem(live('vr', ['shaft-bores', '--operator', 'browser', '--alpha', '0.5']));
+  try {
+    const page = await openViewer(browser, run, { init: emulatedHeadset });
+    await waitFor(page, () => !document.getElementById('enter-vr').hidden);
+    await page.click('#enter-vr');
+    await waitFor(page, () => window.tandem.xr.presenting);
+    const hand = (p, q) => page.evaluate(([p, q]) => {
+      const c = window.xrDevice.controllers.right;
+      c.position.set(...p);
+      if (q) c.quaternion.set(...q);
+    }, [p, q]);
+    const squeeze = (v) => page.evaluate((v) => window.xrDevice.controllers.right.updateButtonValue('squeeze', v), v);
+    const pose = () => page.evaluate(() => window.tandem.partPose());
+
+    // Grab the part where it lies (the hand at its reference point) and lift it 0.5 m, 0.4 m along x.
+    const start = await pose();
+    const at = await page.evaluate((q) => window.tandem.xr.pointOf(q[0], q[1], q[2]), start);
+    await hand(at, [0, 0, 0, 1]);
+    await sleep(300);
+    await squeeze(1);
+    await waitFor(page, () => window.tandem.xr.holding);
+    const lifted = [start[0] + 0.4, start[1], start[2] + 0.5];
+    // The scene's x is the headset space's x, the scene's z its y.
+    await hand([at[0] + 0.4, at[1] + 0.5, at[2]]);
+    await waitFor(page, ([t, tol]) => Math.hypot(...window.tandem.partPose().slice(0, 3).map((v, k) => v - t[k])) < tol, [lifted, 1e-4]);
+    assert.ok(turn(await pose(), start) < 1e-3, 'a hand that does not turn does not turn the part');
+    await waitFor(page, (t) => window.tandem.operatorNodes().some((n) => Math.hypot(n[0] - t[0], n[1] - t[1], n[2] - t[2]) < 0.05), lifted);
+    // Turning the hand 30 degrees about the vertical turns the part 30 degrees.
+    const s = Math.sin(Math.PI / 12), c = Math.cos(Math.PI / 12);
+    await hand([at[0] + 0.4, at[1] + 0.5, at[2]], [0, s, 0, c]);
+    await waitFor(page, (q0) => {
+      const q = window.tandem.partPose();
+      const dot = Math.abs(q[3] * q0[3] + q[4] * q0[4] + q[5] * q0[5] + q[6] * q0[6]);
+      return Math.abs(2 * Math.acos(Math.min(1, dot)) - Math.PI / 6) < 1e-3;
+    }, start);
+
+    // Letting go leaves the part where it is: the hand moves on without it.
+    await squeeze(0);
+    await waitFor(page, () => !window.tandem.xr.holding);
+    const released = await pose();
+    const h = [at[0] - 0.3, at[1] + 0.2, at[2] + 0.2];
+    await hand(h, [0, 0, 0, 1]);
+    await sleep(1000);
+    assert.ok(distance(await pose(), released) < 1e-9 && turn(await pose(), released) < 1e-9, 'the part stays where it was let go');
+    assert.ok(distance(await page.evaluate(() => window.tandem.operator.q), released) < 1e-6, 'the operator is where it was let go');
+
+    // Grab again where the hand is now (the clutch) and bring the part 2 cm above the left housing:
+    // contact mode, felt as pulses of the holding controller.
+    await squeeze(1);
+    await waitFor(page, () => window.tandem.xr.holding);
+    const p = await pose();
+    const above = [-0.25, 0.0, 0.65];
+    await hand([h[0] + above[0] - p[0], h[1] + above[2] - p[2], h[2] - (above[1] - p[1])]);
+    await waitFor(page, () => window.tandem.operator?.contact === true);
+    await waitFor(page, () => window.tandem.xr.pulses > 0);
+    await page.screenshot({ path: artefactPath('vr.png') });
+
+    // Out of VR, a gamepad rumbles for the same cue (the part still held near the housing by the
+    // browser, the input in control).
+    await squeeze(0);
+    // (The emulated headset's view covers the page, as a headset's does: the button is pressed by
+    // script.)
+    await page.evaluate(() => document.getElementById('enter-vr').click());
+    await waitFor(page, () => !window.tandem.xr.presenting);
+    await page.evaluate(() => {
+      window.__effects = [];
+      const vibrationActuator = { playEffect: async (type, p) => { window.__effects.push({ type, ...p }); return 'complete'; } };
+      navigator.getGamepads = () => [{ axes: [0, 0, 0, 0], buttons: [], vibrationActuator }];
+    });
+    await waitFor(page, () => window.__effects.length > 0);
+    const effect = await page.evaluate(() => window.__effects[0]);
+    assert.equal(effect.type, 'dual-rumble');
+    assert.ok(effect.strongMagnitude > 0 && effect.strongMagnitude <= 1, JSON.stringify(effect));
+    assert.deepEqual(page.logs.filter((l) => l.startsWith('page error')), []);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
 test('the layered drawing (software renderer) shows what drawing everything shows; the trees are thinned only while the camera turns', { timeout: 90000 }, async () => {
   const run = await startTandem(live('layers', ['cluttered-2', '--mode', 'interactive', '--alpha', '1', '--operator', 'browser']));
   try {
