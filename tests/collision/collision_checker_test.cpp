@@ -186,5 +186,29 @@ TEST(CollisionChecker, ReportsInfiniteDistanceWithoutObstacles) {
   EXPECT_TRUE(std::isinf(checker.nearest_obstacle(at(0, 0, 0)).distance));
 }
 
+TEST(CollisionChecker, FindsEverySurfaceNearTheObjectNearestFirst) {
+  // A floor (top at z = 0), a wall (face at x = 2) and a thin plate far away; a 1 x 0.4 x 0.4 bar.
+  Scene s;
+  s.object.name = "bar";
+  s.object.parts.push_back({Box{{1.0, 0.4, 0.4}}, Eigen::Isometry3d::Identity()});
+  s.obstacles.push_back(box_body("floor", {10, 10, 0.2}, {0, 0, -0.1}));
+  s.obstacles.push_back(box_body("wall", {0.2, 10, 4}, {2.1, 0, 2}));
+  s.obstacles.push_back(box_body("far", {0.2, 0.2, 0.2}, {-3, -3, 1}));
+  CollisionChecker checker(s);
+  // 0.05 above the floor, 0.1 from the wall: both, the floor first; the far plate is not near.
+  const std::vector<NearestObstacle> near = checker.nearest_surfaces(at(1.4, 0, 0.25), 0.2);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_EQ(checker.obstacle_name(near[0].obstacle), "floor");
+  EXPECT_NEAR(near[0].distance, 0.05, 1e-9);
+  EXPECT_NEAR(near[0].point_on_obstacle.z(), 0.0, 1e-9);
+  EXPECT_EQ(checker.obstacle_name(near[1].obstacle), "wall");
+  EXPECT_NEAR(near[1].distance, 0.1, 1e-9);
+  EXPECT_NEAR(near[1].point_on_obstacle.x(), 2.0, 1e-9);
+  // Within a smaller distance, only the floor; touching the floor, none (no direction is known).
+  EXPECT_EQ(checker.nearest_surfaces(at(1.4, 0, 0.25), 0.07).size(), 1u);
+  EXPECT_TRUE(checker.nearest_surfaces(at(1.4, 0, 0.15), 0.2).empty());
+  EXPECT_TRUE(checker.nearest_surfaces(at(0, 0, 1.5), 0.2).empty());
+}
+
 }  // namespace
 }  // namespace tandem

@@ -1,3 +1,5 @@
+// size: the checker and its queries (collision, clearance, nearest points) share its private FCL
+// geometry; splitting them would expose it.
 #include "tandem/collision/collision_checker.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -223,6 +225,46 @@ std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const B
       Prefilter{bounds, spacing, std::move(grid), std::move(object)});
 }
 
+/// The nearest points of one part of the object (at X_WP) and one part of an obstacle, or a
+/// collision (FCL's distance is not signed: touching parts have no direction). An FCL exception
+/// counts as a collision.
+NearestObstacle nearest_pair(const FclPart& part, const Eigen::Isometry3d& X_WP,
+                             const FclPart& obstacle, const fcl::CollisionRequestd& collision,
+                             const fcl::DistanceRequestd& distance, CollisionCounters& counters) {
+  const NearestObstacle touching{true, 0.0, X_WP.translation(), X_WP.translation(),
+                                 obstacle.obstacle};
+  try {
+    fcl::CollisionResultd hit;
+    if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
+                     obstacle.pose, collision, hit) > 0) {
+      return touching;
+    }
+    // NOTE: FCL 0.7 returns nearest points in the objects' local frames, not the world frame,
+    // for a primitive passed before a mesh, and for a sphere against a mesh in either order
+    // (checked for every pair of geometry kinds in collision_checker_test). So the mesh goes
+    // first, and the points of a sphere-mesh pair are taken to the world frame here.
+    const bool obstacle_first = obstacle.is_mesh && !part.is_mesh;
+    fcl::DistanceResultd result;
+    if (obstacle_first) {
+      fcl::distance(obstacle.geometry.get(), obstacle.pose, part.geometry.get(), X_WP, distance,
+                    result);
+      std::swap(result.nearest_points[0], result.nearest_points[1]);
+    } else {
+      fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose, distance,
+                    result);
+    }
+    if ((obstacle.is_mesh && part.is_sphere) || (part.is_mesh && obstacle.is_sphere)) {
+      result.nearest_points[0] = X_WP * result.nearest_points[0];
+      result.nearest_points[1] = obstacle.pose * result.nearest_points[1];
+    }
+    return NearestObstacle{false, std::max(0.0, result.min_distance), result.nearest_points[0],
+                           result.nearest_points[1], obstacle.obstacle};
+  } catch (const std::exception&) {
+    ++counters.fcl_errors;
+    return touching;
+  }
+}
+
 /// The pre-filter's bound on the object's clearance at X_WO up to cap, or a value below `enough`
 /// when it cannot show `enough`.
 double prefilter_clearance(const Prefilter& p, const Eigen::Isometry3d& X_WO, double enough,
@@ -384,47 +426,46 @@ NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
     for (const auto& obstacle : m.geometry->obstacles) {
       if (box.distance_to(obstacle.box) >= best.distance)
         continue;
-      try {
-        fcl::CollisionResultd hit;
-        if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
-                         obstacle.pose, m.collision_request, hit) > 0) {
-          best =
-              NearestObstacle{true, 0.0, X_WP.translation(), X_WP.translation(), obstacle.obstacle};
-          return best;
-        }
-        // NOTE: FCL 0.7 returns nearest points in the objects' local frames, not the world frame,
-        // for a primitive passed before a mesh, and for a sphere against a mesh in either order
-        // (checked for every pair of geometry kinds in collision_checker_test). So the mesh goes
-        // first, and the points of a sphere-mesh pair are taken to the world frame here.
-        const bool obstacle_first = obstacle.is_mesh && !part.is_mesh;
-        fcl::DistanceResultd result;
-        if (obstacle_first) {
-          fcl::distance(obstacle.geometry.get(), obstacle.pose, part.geometry.get(), X_WP,
-                        m.distance_request, result);
-          std::swap(result.nearest_points[0], result.nearest_points[1]);
-        } else {
-          fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
-                        m.distance_request, result);
-        }
-        if ((obstacle.is_mesh && part.is_sphere) || (part.is_mesh && obstacle.is_sphere)) {
-          result.nearest_points[0] = X_WP * result.nearest_points[0];
-          result.nearest_points[1] = obstacle.pose * result.nearest_points[1];
-        }
-        if (result.min_distance < best.distance) {
-          best.in_collision = false;
-          best.distance = std::max(0.0, result.min_distance);
-          best.point_on_object = result.nearest_points[0];
-          best.point_on_obstacle = result.nearest_points[1];
-          best.obstacle = obstacle.obstacle;
-        }
-      } catch (const std::exception&) {
-        ++m.counters.fcl_errors;
-        return NearestObstacle{true, 0.0, X_WP.translation(), X_WP.translation(),
-                               obstacle.obstacle};
-      }
+      const NearestObstacle pair =
+          nearest_pair(part, X_WP, obstacle, m.collision_request, m.distance_request, m.counters);
+      if (pair.in_collision)
+        return pair;
+      if (pair.distance < best.distance)
+        best = pair;
     }
   }
   return best;
+}
+
+std::vector<NearestObstacle> CollisionChecker::nearest_surfaces(const Config& q, double within) {
+  Impl& m = *impl_;
+  ++m.counters.distance_queries;
+  std::vector<NearestObstacle> out;
+  const Eigen::Isometry3d X_WO = q.pose();
+  for (const auto& obstacle : m.geometry->obstacles) {
+    NearestObstacle best;
+    best.distance = within;
+    bool found = false;
+    for (const auto& part : m.geometry->object) {
+      const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
+      if (part.box.transformed(X_WP).distance_to(obstacle.box) > best.distance)
+        continue;
+      const NearestObstacle pair =
+          nearest_pair(part, X_WP, obstacle, m.collision_request, m.distance_request, m.counters);
+      if (pair.in_collision)
+        return {};
+      if (pair.distance <= best.distance) {
+        best = pair;
+        found = true;
+      }
+    }
+    if (found)
+      out.push_back(best);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const NearestObstacle& a, const NearestObstacle& b) {
+    return a.distance < b.distance;
+  });
+  return out;
 }
 
 double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl_cap) {

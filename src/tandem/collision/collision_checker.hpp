@@ -64,6 +64,12 @@ class CollisionChecker {
   /// The obstacle nearest to the object at q, with the nearest points.
   NearestObstacle nearest_obstacle(const Config& q);
 
+  /// For each part of an obstacle (a shape, or a mesh) within `within` of the object at q, its
+  /// nearest points to the object, nearest first: the surfaces the object is near (several near an
+  /// edge or a corner made of several parts; one part's own edge counts as one). Empty when the
+  /// object touches an obstacle.
+  std::vector<NearestObstacle> nearest_surfaces(const Config& q, double within);
+
   /// A lower bound on the distance between the object at q and every obstacle, capped: the result
   /// c satisfies c <= min(cap, true distance), and c < cap only when something is closer than cap.
   /// It is <= 0 when the object collides (FCL's mesh distance is 0 for intersecting triangles,

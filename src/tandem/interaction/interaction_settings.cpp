@@ -64,6 +64,28 @@ void add_sharing(ParamTable<S>& t) {
        .group = "sharing",
        .live = true},
       &S::contact_clearance));
+  t.push_back(integer_param<S>(
+      {.name = "contact_surfaces",
+       .label = "contact surfaces",
+       .min = 1.0,
+       .max = 3.0,
+       .help = "Contact on edges and corners: up to this many obstacle surfaces within d (normals "
+               "30 degrees apart or more); with 2 the samples lie on the line above both tangent "
+               "planes, with 3 at the point above all three (1: the papers' one plane)",
+       .group = "sharing",
+       .live = true},
+      &S::contact_surfaces));
+  t.push_back(real_param<S>(
+      {.name = "contact_turn",
+       .label = "contact turn",
+       .unit = "deg",
+       .min = 0.0,
+       .max = 180.0,
+       .help = "Orientation change in contact: each contact sample turns the operator's "
+               "orientation about the contact normal by up to this many degrees (0: the papers')",
+       .group = "sharing",
+       .live = true},
+      &S::contact_turn_deg));
 }
 
 /// The I-RRT (Taix & Flavigne 2011).

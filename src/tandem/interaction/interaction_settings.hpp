@@ -40,6 +40,14 @@ struct InteractionSettings {
   /// Gap between contact samples and the tangent plane (FCL counts touching as collision). 0:
   /// contact_clearance(s, space, validation), scaled to the space's translation step.
   double contact_clearance = 0.0;
+  /// Contact on edges and corners (the 2016 paper's future work): up to this many surfaces
+  /// (obstacle parts whose normals differ by 30 degrees or more) within d; with two the samples
+  /// lie on the line above both tangent planes, with three at the point above all three. 1: the
+  /// papers' one plane.
+  int contact_surfaces = 1;
+  /// Orientation change in contact: each sample turns the operator's orientation about the
+  /// contact normal by up to this many degrees (uniform). 0: the papers' (the operator's own).
+  double contact_turn_deg = 0.0;
 
   // I-RRT (2011).
   IrrtSampling sampling = IrrtSampling::mag;

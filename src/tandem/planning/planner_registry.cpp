@@ -17,7 +17,7 @@ namespace {
 std::unique_ptr<TargetSampler> sharing(const PlannerContext& c) {
   return std::make_unique<AuthoritySharing>(c.validator.space(), *c.interaction,
                                             c.settings.interaction, c.settings.seed,
-                                            c.settings.validation);
+                                            c.settings.validation, &c.validator.checker());
 }
 
 std::unique_ptr<Planner> make_birrt(const PlannerContext& c) {

@@ -1,5 +1,6 @@
 #include "tandem/sampling/authority_sharing.hpp"
 
+#include <numbers>
 #include <stdexcept>
 
 #include "tandem/sampling/contact_sampler.hpp"
@@ -8,9 +9,10 @@ namespace tandem {
 
 AuthoritySharing::AuthoritySharing(const SE3Space& space, const Interaction& interaction,
                                    const InteractionSettings& settings, std::uint64_t seed,
-                                   MotionValidation validation)
+                                   MotionValidation validation, CollisionChecker* checker)
     : space_(space),
       validation_(validation),
+      checker_(checker),
       interaction_(interaction),
       settings_(settings),
       authority_rng_(seed ^ 0xa5a5a5a5deadbeefULL),
@@ -41,17 +43,42 @@ void AuthoritySharing::sample(const SampleRequest& request, std::vector<Target>&
 bool AuthoritySharing::contact_sampling(const OperatorState& op, const InteractionSettings& s,
                                         std::vector<Target>& out) {
   const auto& frame = op.frame;
-  if (!s.contact || !frame || frame->distance > contact_distance(s, space_))
+  const double d = contact_distance(s, space_);
+  if (!s.contact || !frame || frame->distance > d)
     return false;
   // Step 7: ContactSampling(P_o, P_n, N, q_device).
   ++stats_.contact_entries;
   const double clearance = contact_clearance(s, space_, validation_);
   const std::size_t before = out.size();
+  if (s.contact_surfaces <= 1 && s.contact_turn_deg <= 0.0) {
+    // The papers' one plane, with the operator's orientation.
+    for (int i = 0; i < s.contact_samples; ++i) {
+      if (auto q = sample_contact(*frame, op.device.q_device.q, space_, clearance, contact_rng_))
+        out.push_back({*q, NodeSource::contact});
+    }
+    return out.size() > before;
+  }
+  const std::vector<ContactFrame> frames = contact_surfaces(op, s, d);
+  const double turn = s.contact_turn_deg * std::numbers::pi / 180.0;
   for (int i = 0; i < s.contact_samples; ++i) {
-    if (auto q = sample_contact(*frame, op.device.q_device.q, space_, clearance, contact_rng_))
+    if (auto q = sample_contact_surfaces(frames, op.device.q_device.q, space_, clearance, turn,
+                                         contact_rng_))
       out.push_back({*q, NodeSource::contact});
   }
   return out.size() > before;
+}
+
+std::vector<ContactFrame> AuthoritySharing::contact_surfaces(const OperatorState& op,
+                                                             const InteractionSettings& s,
+                                                             double d) {
+  std::vector<ContactFrame> frames{*op.frame};
+  if (s.contact_surfaces <= 1 || checker_ == nullptr)
+    return frames;
+  for (const NearestObstacle& near : checker_->nearest_surfaces(op.device.q_device, d)) {
+    if (auto f = find_local_frame(near, op.device.q_device))
+      frames.push_back(*f);
+  }
+  return distinct_surfaces(frames, static_cast<std::size_t>(s.contact_surfaces));
 }
 
 SamplerStats AuthoritySharing::stats() const {

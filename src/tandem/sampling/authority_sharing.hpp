@@ -20,7 +20,9 @@
 
 #include <optional>
 
+#include "tandem/collision/collision_checker.hpp"
 #include "tandem/collision/motion_validation.hpp"
+#include "tandem/interaction/contact_frame.hpp"
 #include "tandem/interaction/interaction.hpp"
 #include "tandem/sampling/target_sampler.hpp"
 
@@ -30,9 +32,11 @@ class AuthoritySharing final : public TargetSampler {
  public:
   /// `interaction.feed` is required; without `interaction.parameters`, `settings` hold throughout.
   /// `validation` is the planner's way of checking motions (it sets the default contact clearance).
+  /// `checker` (the planner's, may be null) finds the surfaces of an edge or a corner when
+  /// contact_surfaces > 1.
   AuthoritySharing(const SE3Space& space, const Interaction& interaction,
                    const InteractionSettings& settings, std::uint64_t seed,
-                   MotionValidation validation);
+                   MotionValidation validation, CollisionChecker* checker = nullptr);
 
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
   SamplerStats stats() const override;
@@ -41,9 +45,14 @@ class AuthoritySharing final : public TargetSampler {
   /// Steps 6-7: contact samples, or nothing when not in contact mode.
   bool contact_sampling(const OperatorState& op, const InteractionSettings& s,
                         std::vector<Target>& out);
+  /// The surfaces contact samples lie above: the operator's frame, and with contact_surfaces > 1
+  /// those of the other obstacle parts within d whose normals differ from it.
+  std::vector<ContactFrame> contact_surfaces(const OperatorState& op, const InteractionSettings& s,
+                                             double d);
 
   const SE3Space& space_;
   MotionValidation validation_;
+  CollisionChecker* checker_;
   Interaction interaction_;
   InteractionSettings settings_;
   Rng authority_rng_;  ///< the authority draws, apart from the sampling stream

@@ -13,6 +13,7 @@
 // motion checks resolve. In a planar space the plane is a line in the plane of motion.
 
 #include <optional>
+#include <vector>
 
 #include "tandem/core/rng.hpp"
 #include "tandem/interaction/contact_frame.hpp"
@@ -24,5 +25,21 @@ namespace tandem {
 std::optional<Config> sample_contact(const ContactFrame& frame,
                                      const Eigen::Quaterniond& q_operator, const SE3Space& space,
                                      double clearance, Rng& rng);
+
+/// Beyond one plane (the 2016 paper's future work). The orientation: the operator's, turned about
+/// the first frame's normal by an angle uniform in [-turn, turn] (radians) about the object's
+/// nearest point, which keeps a flat face at its distance from its plane. The translation: with
+/// one frame, sample_contact's; with two (normals not parallel), uniform on the line where the
+/// object is `clearance` above both tangent planes, inside the bounds (an edge); with three, the
+/// point above all three (a corner). Nothing if the line or point misses the bounds.
+std::optional<Config> sample_contact_surfaces(const std::vector<ContactFrame>& frames,
+                                              const Eigen::Quaterniond& q_operator,
+                                              const SE3Space& space, double clearance, double turn,
+                                              Rng& rng);
+
+/// Of frames (nearest first), those whose normals are at least 30 degrees from every one kept
+/// before them, at most `most`: the distinct surfaces of an edge or a corner.
+std::vector<ContactFrame> distinct_surfaces(const std::vector<ContactFrame>& frames,
+                                            std::size_t most);
 
 }  // namespace tandem
