@@ -188,7 +188,10 @@ test('in VR (an emulated headset) the grip holds the part, operator nodes grow w
     const h = [at[0] - 0.3, at[1] + 0.2, at[2] + 0.2];
     await hand(h, [0, 0, 0, 1]);
     await sleep(1000);
-    assert.ok(distance(await pose(), released) < 1e-9 && turn(await pose(), released) < 1e-9, 'the part stays where it was let go');
+    // (To the rounding of the pose's way through the server and back: the hand moved 0.4 m.)
+    const now = await pose();
+    assert.ok(distance(now, released) < 1e-6 && turn(now, released) < 1e-6,
+      `the part stays where it was let go: ${now} against ${released}`);
     assert.ok(distance(await page.evaluate(() => window.tandem.operator.q), released) < 1e-6, 'the operator is where it was let go');
 
     // Grab again where the hand is now (the clutch) and bring the part 2 cm above the left housing:
