@@ -1,14 +1,17 @@
 // tandem interactive and tandem demo: a live session, the planner thread and the operator thread
 // together, journaled for exact replay, with the web viewer served from this process.
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "run_options.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/core/stopwatch.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path.hpp"
 #include "tandem/session/live_session.hpp"
@@ -25,8 +28,9 @@ struct InteractiveArgs {
   bool paused = false;
   bool exit_when_done = false;
   std::optional<double> linger;  ///< seconds to wait for a browser after the planner ends
-  /// With the viewer: the planner starts when the first browser connects (or after --linger
-  /// seconds without one), so that a person sees the trees grow from the start.
+  /// With the viewer: the session (the planner and the simulated operator) starts when the first
+  /// browser connects (or after --linger seconds without one), so that a person sees the trees
+  /// grow from the start.
   bool wait_for_browser = false;
   std::string session;
   double operator_rate = 1000.0;
@@ -49,22 +53,16 @@ std::string default_session_file(const Problem& problem) {
   return "sessions/" + problem.name + "-" + stamp + ".jsonl";
 }
 
-/// What the browser may do to a live session; it may also start a session that waits for one.
+/// What the browser may do to a live session.
 ///
-/// Threading: handle() and connected() on the server's thread, the rest on the planner's.
+/// Threading: handle() and connected() on the server's thread, browser_came() on any.
 class LiveControl final : public ViewerControl {
  public:
-  LiveControl(LiveSession& session, bool wait_for_browser)
-      : session_(session), waiting_(wait_for_browser) {}
+  explicit LiveControl(LiveSession& session) : session_(session) {}
 
-  /// Whether the session still waits for its first browser.
-  bool waiting() const { return waiting_.load(); }
-  /// Starts a session that waits (once).
-  void start() {
-    if (waiting_.exchange(false))
-      session_.resume();
-  }
-  void connected() override { start(); }
+  /// Whether a browser has connected.
+  bool browser_came() const { return browser_came_.load(); }
+  void connected() override { browser_came_.store(true); }
 
   std::optional<std::string> handle(const ClientMessage& m) override {
     switch (m.kind) {
@@ -98,7 +96,7 @@ class LiveControl final : public ViewerControl {
 
  private:
   LiveSession& session_;
-  std::atomic<bool> waiting_;
+  std::atomic<bool> browser_came_{false};
 };
 
 /// The run a live session makes: a planner that takes an operator, 600 s unless told otherwise.
@@ -125,7 +123,7 @@ LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
   options.operator_rate_hz = args.operator_rate;
   options.digest_every_s = args.digest_every;
   options.stay = !args.headless && !args.exit_when_done;
-  options.start_paused = args.paused || (args.wait_for_browser && !args.headless);
+  options.start_paused = args.paused;
   return options;
 }
 
@@ -133,7 +131,7 @@ LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
 struct Viewer {
   Viewer(const Problem& problem, LiveSession& session, const InteractiveArgs& args)
       : state(problem, session.spec().mode, false),
-        control(session, args.wait_for_browser && !args.paused),
+        control(session),
         server(state, control, server_options(args.viewer)) {
     session.set_observer(&state);
   }
@@ -142,19 +140,20 @@ struct Viewer {
   ViewerServer server;
 };
 
-/// Called each second while the session waits for its first browser: starts it after --linger
-/// seconds without one. Whether it still waits.
-bool waits_for_browser(const InteractiveArgs& args, const std::unique_ptr<Viewer>& viewer,
-                       double& waited_s) {
-  if (!viewer || !viewer->control.waiting())
-    return false;
-  waited_s += 1.0;
-  if (!args.linger || waited_s <= *args.linger)
-    return true;
-  std::cout << "  no browser in " << static_cast<int>(*args.linger) << " s: planning without one\n"
-            << std::flush;
-  viewer->control.start();
-  return false;
+/// The demo's wait before the session: until the first browser connects, --linger seconds at most
+/// (or Ctrl-C).
+void wait_for_browser(const InteractiveArgs& args, const LiveSession& session,
+                      const Viewer& viewer) {
+  const Stopwatch watch;
+  const double limit = args.linger.value_or(60.0);
+  while (!viewer.control.browser_came() && !session.stopping()) {
+    if (watch.seconds() > limit) {
+      std::cout << "  no browser in " << static_cast<int>(limit) << " s: planning without one\n"
+                << std::flush;
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 /// Prints progress each second; once the planner has ended, ends the session after --linger
@@ -163,10 +162,7 @@ std::function<void(const LiveProgress&)> progress_printer(InteractiveArgs& args,
                                                           LiveSession& session,
                                                           const std::unique_ptr<Viewer>& viewer) {
   auto announced_end = std::make_shared<bool>(false);
-  auto waited_s = std::make_shared<double>(0.0);
-  return [&args, &session, &viewer, announced_end, waited_s](const LiveProgress& p) {
-    if (waits_for_browser(args, viewer, *waited_s))
-      return;
+  return [&args, &session, &viewer, announced_end](const LiveProgress& p) {
     if (p.status != PlannerStatus::running) {
       if (!*announced_end) {
         *announced_end = true;
@@ -224,7 +220,7 @@ int run_interactive(InteractiveArgs args) {
   if (!args.headless) {
     viewer = std::make_unique<Viewer>(problem, session, args);
     std::cout << "  viewer: " << viewer->server.url() << "  (Ctrl-C ends the session)\n";
-    if (viewer->control.waiting())
+    if (args.wait_for_browser)
       std::cout << "  the planner starts when a browser opens the viewer\n";
   }
   std::cout << std::flush;
@@ -232,6 +228,8 @@ int run_interactive(InteractiveArgs args) {
   g_session.store(&session);
   std::signal(SIGINT, on_session_signal);
   std::signal(SIGTERM, on_session_signal);
+  if (viewer && args.wait_for_browser)
+    wait_for_browser(args, session, *viewer);
   const PlannerStatus status = session.run(progress_printer(args, session, viewer));
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);

@@ -92,6 +92,8 @@ class LiveSession {
 
   // Commands, thread-safe; they take effect after the planner's current step, in order.
   void stop() { stop_.store(true, std::memory_order_relaxed); }
+  /// Whether stop() was called (from any thread).
+  bool stopping() const { return stop_.load(std::memory_order_relaxed); }
   /// New interaction settings, applied (and journaled) after the planner's current step.
   void set_interaction(const InteractionSettings& settings);
   void pause();
