@@ -129,10 +129,10 @@ LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
 
 /// The viewer of a session: its state, the session's controls and the server, alive together.
 struct Viewer {
-  Viewer(const Problem& problem, LiveSession& session, const InteractiveArgs& args)
+  Viewer(const Problem& problem, LiveSession& session, const ViewerArgs& args)
       : state(problem, session.spec().mode, false),
         control(session),
-        server(state, control, server_options(args.viewer)) {
+        server(state, control, server_options(args)) {
     session.set_observer(&state);
   }
   ViewerState state;
@@ -218,7 +218,7 @@ int run_interactive(InteractiveArgs args) {
     std::cout << "  " << input.spacemouse_status << '\n';
   std::unique_ptr<Viewer> viewer;
   if (!args.headless) {
-    viewer = std::make_unique<Viewer>(problem, session, args);
+    viewer = std::make_unique<Viewer>(problem, session, args.viewer);
     std::cout << "  viewer: " << viewer->server.url() << "  (Ctrl-C ends the session)\n";
     if (args.wait_for_browser)
       std::cout << "  the planner starts when a browser opens the viewer\n";

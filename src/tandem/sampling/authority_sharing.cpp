@@ -50,14 +50,7 @@ bool AuthoritySharing::contact_sampling(const OperatorState& op, const Interacti
   ++stats_.contact_entries;
   const double clearance = contact_clearance(s, space_, validation_);
   const std::size_t before = out.size();
-  if (s.contact_surfaces <= 1 && s.contact_turn_deg <= 0.0) {
-    // The papers' one plane, with the operator's orientation.
-    for (int i = 0; i < s.contact_samples; ++i) {
-      if (auto q = sample_contact(*frame, op.device.q_device.q, space_, clearance, contact_rng_))
-        out.push_back({*q, NodeSource::contact});
-    }
-    return out.size() > before;
-  }
+  // With the defaults (one surface, no turn), the papers' one plane and the operator's orientation.
   const std::vector<ContactFrame> frames = contact_surfaces(op, s, d);
   const double turn = s.contact_turn_deg * std::numbers::pi / 180.0;
   for (int i = 0; i < s.contact_samples; ++i) {

@@ -148,9 +148,12 @@ std::optional<Config> sample_contact_surfaces(const std::vector<ContactFrame>& f
   if (frames.empty() || frames.size() > 3)
     return std::nullopt;
   const ContactFrame& first = frames.front();
-  // The turn about the first normal, about the object's nearest point P_n.
-  const Eigen::AngleAxisd R(turn > 0.0 ? rng.uniform(-turn, turn) : 0.0, first.n);
-  const Eigen::Quaterniond q = (Eigen::Quaterniond(R) * q_operator).normalized();
+  // The turn about the first normal, about the object's nearest point P_n. Without one, the
+  // operator's orientation as it is: one frame is then the papers' sampler, bit for bit.
+  const double angle = turn > 0.0 ? rng.uniform(-turn, turn) : 0.0;
+  const Eigen::AngleAxisd R(angle, first.n);
+  const Eigen::Quaterniond q =
+      angle != 0.0 ? (Eigen::Quaterniond(R) * q_operator).normalized() : q_operator;
   if (frames.size() == 1 || space.planar())
     return sample_contact(first, q, space, clearance, rng);
   const Eigen::Vector3d t0 = first.P_n + R * (first.P_c - first.P_n);

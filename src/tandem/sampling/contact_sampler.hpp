@@ -28,7 +28,8 @@ std::optional<Config> sample_contact(const ContactFrame& frame,
 
 /// Beyond one plane (the 2016 paper's future work). The orientation: the operator's, turned about
 /// the first frame's normal by an angle uniform in [-turn, turn] (radians) about the object's
-/// nearest point, which keeps a flat face at its distance from its plane. The translation: with
+/// nearest point, which keeps a flat face at its distance from its plane (with turn 0 and one
+/// frame, exactly sample_contact). The translation: with
 /// one frame, sample_contact's; with two (normals not parallel), uniform on the line where the
 /// object is `clearance` above both tangent planes, inside the bounds (an edge); with three, the
 /// point above all three (a corner). Nothing if the line or point misses the bounds.
