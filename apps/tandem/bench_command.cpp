@@ -171,7 +171,7 @@ Command add_bench_command(CLI::App& app) {
   app.add_option("EXPERIMENT", args->experiment, "An experiment file (.toml); see experiments/")
       ->required();
   app.add_option("--out", args->out, "Results folder (default bench-results/NAME)");
-  app.add_option("--jobs", args->jobs, "Runs at a time (default: one per core)")
+  app.add_option("--jobs", args->jobs, "Runs at a time (default: one per core; in human time, one)")
       ->check(CLI::Range(1u, 256u));
   app.add_option("--seeds", args->seeds, "Seeds per configuration instead of the file's")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000}));

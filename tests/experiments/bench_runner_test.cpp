@@ -12,6 +12,7 @@
 #include "support/runs.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
+#include "tandem/experiments/report.hpp"
 
 namespace tandem {
 namespace {
@@ -79,8 +80,15 @@ TEST(BenchRunner, RefusesAFolderOfAnotherExperimentAndAnOperatorWithoutAGuide) {
   other.time_limit = 5;
   EXPECT_THAT(
       test::error_message<InputError>([&] { return run_experiment(other, f.problem, options); }),
-      HasSubstr("runs.jsonl: holds runs of problem 'wall-with-gap' with a time limit of 30 "
-                "s; this experiment runs 'wall-with-gap' with 5 s"));
+      HasSubstr(
+          "runs.jsonl: holds runs of problem 'wall-with-gap' with a time limit of 30 "
+          "s in virtual time; this experiment runs 'wall-with-gap' with 5 s in virtual time"));
+  // Nor runs of the same experiment in human time.
+  Experiment human = f.experiment;
+  human.clock = "wall";
+  EXPECT_THAT(
+      test::error_message<InputError>([&] { return run_experiment(human, f.problem, options); }),
+      HasSubstr("in virtual time; this experiment runs 'wall-with-gap' with 30 s in wall time"));
 
   Problem no_guide = f.problem;
   no_guide.guide.clear();
@@ -106,6 +114,31 @@ TEST(BenchRunner, AStopFlagInterruptsWithoutRecordingTheInterruptedRuns) {
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.ran, 0u);
   EXPECT_TRUE(read_records(dir.path() / "runs.jsonl").empty());
+}
+
+TEST(BenchRunner, InHumanTimeRunsOneAtATimeWithAPersonOnItsOwnThreadAndTwoCoresForAPlannerAlone) {
+  Fixture f;
+  f.experiment.clock = "wall";
+  test::TempDir dir;
+  BenchOptions options;
+  options.out_dir = dir.path();
+  options.seeds = 1;
+  const BenchResult result = run_experiment(f.experiment, f.problem, options);
+  ASSERT_EQ(result.records.size(), 2u);
+  const RunRecord& alone = result.records[0];
+  const RunRecord& together = result.records[1];
+  EXPECT_EQ(alone.clock, "wall");
+  EXPECT_EQ(together.clock, "wall");
+  EXPECT_EQ(alone.threads, 2u);
+  EXPECT_TRUE(together.solved);
+  EXPECT_TRUE(together.path_valid);
+  EXPECT_LE(together.time_s, 30.0);
+  // The person's states reached the planner: it grew nodes toward them.
+  EXPECT_GT(together.operator_iterations, 0u);
+  EXPECT_GT(together.nodes_by_source[static_cast<std::size_t>(NodeSource::operator_)], 0u);
+  const std::string report = format_report(f.experiment, f.problem, result.records, "cmd", {});
+  EXPECT_THAT(report, HasSubstr("In human time"));
+  EXPECT_THAT(report, HasSubstr("person waited s"));
 }
 
 }  // namespace

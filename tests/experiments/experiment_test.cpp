@@ -72,6 +72,13 @@ TEST(ExperimentFile, TheProblemsHintsFillWhatAConfigurationLeavesOut) {
   EXPECT_EQ(x.configs[0].spec(1, 1).settings.extend, ExtendMode::classic);
 }
 
+TEST(ExperimentFile, RunsInVirtualTimeUnlessItSaysWallClock) {
+  const std::string head = "name = \"t\"\nproblem = \"cluttered-1\"\n";
+  EXPECT_EQ(parse(head).clock, "virtual");
+  EXPECT_EQ(parse(head + "clock = \"wall\"\n").clock, "wall");
+  EXPECT_EQ(parse(head + "clock = \"virtual\"\n").clock, "virtual");
+}
+
 TEST(ExperimentFile, FaultsNameTheFileAndLine) {
   const std::string head = "name = \"t\"\nproblem = \"p\"\n";
   struct Case {
@@ -94,6 +101,9 @@ TEST(ExperimentFile, FaultsNameTheFileAndLine) {
        "x.toml:4: contact_samples must be a whole number in [1, 100000], not 2.5"},
       {head + "seeds = 0\n", "x.toml:3: seeds must be a positive integer"},
       {head + "time_limit = -1\n", "x.toml:3: time_limit must be a positive number"},
+      {head + "clock = \"lunar\"\n",
+       "x.toml:3: clock must be \"virtual\" (planner iterations) or \"wall\" (human time), not "
+       "\"lunar\""},
       {"name = \"../evil\"\nproblem = \"p\"\n", "x.toml:1: name may hold"},
       {head + "[report]\nrows = \"colour\"\n", "report.rows must name a run parameter"},
       {head + "[report]\nsize = 3\n", "x.toml:4: unknown key 'size' in report"},

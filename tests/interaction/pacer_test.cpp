@@ -23,5 +23,25 @@ TEST(Pacer, FollowsTimeNearTheRoadmapAndGoesBackAwayFromIt) {
   EXPECT_EQ(p.advance(110.0, 0.0), 10.0);
 }
 
+TEST(Pacer, APersonNoticesTheRoadmapLateAndCountsTheTimeSpentGoingBack) {
+  Pacer p(1.0, 0.25);
+  EXPECT_EQ(p.advance(1.0, 0.0), 1.0);
+  // The roadmap falls behind at 1.1 s; the person notices at 1.35 s and only then goes back.
+  EXPECT_EQ(p.advance(1.1, 5.0), 1.1);
+  EXPECT_EQ(p.advance(1.3, 5.0), 1.3);
+  EXPECT_NEAR(p.advance(1.4, 5.0), 1.2, 1e-12);
+  EXPECT_NEAR(p.waited(), 0.1, 1e-12);
+  // The roadmap catches up at 1.5 s: the person goes on going back until 1.75 s.
+  EXPECT_NEAR(p.advance(1.5, 0.0), 1.1, 1e-12);
+  EXPECT_NEAR(p.advance(1.7, 0.0), 0.9, 1e-12);
+  EXPECT_NEAR(p.advance(1.8, 0.0), 1.0, 1e-12);
+  EXPECT_NEAR(p.waited(), 0.4, 1e-12);
+  EXPECT_EQ(p.waits(), 3u);
+
+  Pacer at_once(1.0);  // no delay: as before
+  EXPECT_EQ(at_once.advance(1.0, 5.0), 0.0);
+  EXPECT_NEAR(at_once.waited(), 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace tandem

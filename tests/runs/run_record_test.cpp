@@ -31,6 +31,23 @@ TEST(RunRecords, RoundTripThroughAJsonLineAndRejectATornOne) {
   EXPECT_FALSE(parse_record("{}"));
 }
 
+TEST(RunRecords, ARecordFromBeforeHumanTimeReadsAsVirtualTimeWithoutWaiting) {
+  RunRecord r;
+  r.clock = "wall";
+  r.operator_wait_s = 2.5;
+  const auto both = parse_record(format_record(r));
+  ASSERT_TRUE(both);
+  EXPECT_EQ(both->clock, "wall");
+  EXPECT_EQ(both->operator_wait_s, 2.5);
+  nlohmann::json j = record_json(r);
+  j.erase("clock");
+  j.erase("operator_wait_s");
+  const auto back = parse_record(j.dump());
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->clock, "virtual");
+  EXPECT_EQ(back->operator_wait_s, 0.0);
+}
+
 TEST(RunRecords, ARecordFromBeforeThreadsReadsAsOneThread) {
   RunRecord r;
   r.threads = 3;

@@ -16,11 +16,15 @@
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/core/text.hpp"
 #include "tandem/planning/path.hpp"
+#include "tandem/runs/wall_run.hpp"
 
 namespace tandem {
 namespace {
 
 constexpr const char* kRunsFile = "runs.jsonl";
+/// The cores a live session uses (the operator's thread and the planner's), which a run in human
+/// time gets, and a planner alone with it.
+constexpr unsigned kHumanTimeCores = 2;
 
 std::string duration_text(double s) {
   if (!std::isfinite(s) || s < 0.0)
@@ -141,6 +145,10 @@ std::vector<RunRecord> load_and_repair(const std::filesystem::path& file, std::o
   return records;
 }
 
+OperatorClock operator_clock(const Experiment& experiment) {
+  return experiment.clock == "wall" ? OperatorClock::seconds : OperatorClock::ticks;
+}
+
 /// Every configuration must be runnable before any run starts (an unknown operator, a missing
 /// guide or trace): an error now, not after an hour.
 void check_runnable(const Experiment& experiment, const Problem& problem) {
@@ -148,7 +156,7 @@ void check_runnable(const Experiment& experiment, const Problem& problem) {
     const RunSpec spec = c.spec(experiment.seed_start, experiment.time_limit, problem.hints);
     if (uses_operator(spec)) {
       try {
-        (void)make_operator(problem, spec);
+        (void)make_operator(problem, spec, operator_clock(experiment));
       } catch (const InputError& e) {
         throw InputError(experiment.name, "configuration " + c.label() + ": " + e.what());
       }
@@ -159,7 +167,8 @@ void check_runnable(const Experiment& experiment, const Problem& problem) {
 /// Creates the output folder and reads the runs already in its runs file (OUT/runs.jsonl), which
 /// must be of this problem and time limit.
 std::vector<RunRecord> open_output(const std::filesystem::path& out_dir, const Problem& problem,
-                                   double time_limit, std::ostream* log) {
+                                   const Experiment& experiment, std::ostream* log) {
+  const double time_limit = experiment.time_limit;
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec || !std::filesystem::is_directory(out_dir))
@@ -167,11 +176,12 @@ std::vector<RunRecord> open_output(const std::filesystem::path& out_dir, const P
   const std::filesystem::path runs_file = out_dir / kRunsFile;
   std::vector<RunRecord> previous = load_and_repair(runs_file, log);
   for (const RunRecord& r : previous) {
-    if (r.problem != problem.name || r.time_limit_s != time_limit) {
+    if (r.problem != problem.name || r.time_limit_s != time_limit || r.clock != experiment.clock) {
       std::ostringstream msg;
       msg << "holds runs of problem '" << r.problem << "' with a time limit of " << r.time_limit_s
-          << " s; this experiment runs '" << problem.name << "' with " << time_limit
-          << " s. Use another --out folder, or delete this one to start again";
+          << " s in " << r.clock << " time; this experiment runs '" << problem.name << "' with "
+          << time_limit << " s in " << experiment.clock
+          << " time. Use another --out folder, or delete this one to start again";
       throw InputError(runs_file.string(), msg.str());
     }
   }
@@ -225,8 +235,9 @@ class JobQueue {
   void run_all() {
     if (jobs_.empty())
       return;
+    const unsigned jobs = experiment_.clock == "wall" ? 1u : options_.jobs;
     const unsigned n_workers =
-        std::max(1u, std::min<unsigned>(options_.jobs, static_cast<unsigned>(jobs_.size())));
+        std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(jobs_.size())));
     std::vector<std::thread> threads;
     for (unsigned w = 0; w < n_workers; ++w)
       threads.emplace_back([this] { work(); });
@@ -266,20 +277,25 @@ class JobQueue {
     const RunConfig& config = experiment_.configs[job.config];
     const double time_limit = experiment_.time_limit;
     RunSpec spec = config.spec(job.seed, time_limit, problem_.hints);
-    // Runs are already --jobs at a time: one thread each unless the experiment says otherwise.
+    const bool human_time = experiment_.clock == "wall";
+    // Virtual time: runs are --jobs at a time, one thread each. Human time: one run at a time
+    // with both cores, the person's thread and the planner's, or two for a planner alone.
     if (spec.settings.threads == 0)
-      spec.settings.threads = 1;
+      spec.settings.threads = human_time ? kHumanTimeCores : 1;
     // The planner stops on Ctrl-C; a failure of another worker stops this one between runs.
     spec.stop = options_.stop != nullptr ? options_.stop : &stop_all_;
-    const RunOutcome outcome = execute_run(problem_, spec, checker);
+    const RunOutcome outcome = human_time ? execute_wall_run(problem_, spec, checker)
+                                          : execute_run(problem_, spec, checker);
     if (outcome.status == PlannerStatus::interrupted)
       return false;
     // Checked the way the run's planner checked its motions.
     validator.configure(validation_settings(spec.settings));
     const bool valid = outcome.status == PlannerStatus::solved && !outcome.path.empty() &&
                        check_path(outcome.path, validator).valid;
-    recorder_.record(make_record(problem_.name, config.label(), config.values, job.seed, time_limit,
-                                 outcome, valid));
+    RunRecord record = make_record(problem_.name, config.label(), config.values, job.seed,
+                                   time_limit, outcome, valid);
+    record.clock = experiment_.clock;
+    recorder_.record(record);
     return true;
   }
 
@@ -331,8 +347,7 @@ BenchResult run_experiment(const Experiment& experiment, const Problem& problem,
   check_runnable(experiment, problem);
   const std::filesystem::path runs_file = options.out_dir / kRunsFile;
   std::map<std::string, RunRecord> done;
-  index_records(open_output(options.out_dir, problem, experiment.time_limit, options.progress),
-                done);
+  index_records(open_output(options.out_dir, problem, experiment, options.progress), done);
 
   BenchResult result;
   std::vector<Job> jobs = plan_jobs(experiment, seeds, done, result);

@@ -1,6 +1,7 @@
 #pragma once
-// Running an experiment: every configuration x every seed, on worker threads, each run recorded as
-// one JSON line in OUT/runs.jsonl the moment it ends. A run that is already in that file is not run
+// Running an experiment: every configuration x every seed, on worker threads (one in human time:
+// each run takes both cores), each run recorded as one JSON line in OUT/runs.jsonl the moment it
+// ends. A run that is already in that file is not run
 // again, so an interrupted experiment resumes where it stopped.
 //
 // Threading: each worker owns its collision checker, motion validator and planner; the problem is
@@ -27,7 +28,7 @@ namespace tandem {
 
 struct BenchOptions {
   std::filesystem::path out_dir;
-  unsigned jobs = 2;
+  unsigned jobs = 2;  ///< runs at once, in virtual time (human time: one)
   /// Overrides the experiment's number of seeds (e.g. a quick look with 3).
   std::optional<std::uint64_t> seeds;
   /// Set by another thread (a signal handler) to stop: running planners are interrupted.

@@ -93,6 +93,15 @@ void read_header(TomlTable& root, Experiment& x) {
       throw InputError(root.at(n), "time_limit must be a positive number");
     x.time_limit = *v;
   }
+  if (const auto clock = root.optional_string("clock")) {
+    if (*clock != "virtual" && *clock != "wall") {
+      throw InputError(root.at(root.require("clock")),
+                       "clock must be \"virtual\" (planner iterations) or \"wall\" (human time), "
+                       "not \"" +
+                           *clock + "\"");
+    }
+    x.clock = *clock;
+  }
 }
 
 void read_configs(TomlTable& root, Experiment& x) {

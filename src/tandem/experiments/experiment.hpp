@@ -6,6 +6,7 @@
 //   problem = "cluttered-1"          # a built-in scene, or a problem file relative to this file
 //   seeds = 20                       # seeds seed_start .. seed_start + seeds - 1
 //   time_limit = 60.0                # seconds per run
+//   clock = "wall"                   # optional: "virtual" (default) or "wall" (human time)
 //
 //   [base]                           # settings of every run (see RunConfig for the keys)
 //   mode = "interactive-contact"
@@ -22,6 +23,12 @@
 //   columns = ["mode"]               # parameters that make separate series (optional)
 //   panels = "sigma"                 # a parameter that makes separate tables and plots (optional)
 //   paper = { "0.8" = "40 s, 1729 nodes" }   # optional: the paper's figures, quoted beside ours
+//
+// The clock: in virtual time (the default) the simulated operator moves one step per planner
+// iteration, deterministically, and runs go --jobs at a time on one thread each. In human time
+// ("wall") the operator is a simulated person with human limits on its own thread, the planner on
+// another, as in a live session (runs/wall_run.hpp): one run at a time on both cores, and a
+// planner that plans alone gets both cores too (threads = 2 unless the experiment sets it).
 //
 // The keys of [base] and [[sweep]] are "mode" (a planner of the registry) and the tunables the
 // tables declare (run_tunables()), with the same ranges as everywhere. Unknown keys, wrong types
@@ -71,6 +78,7 @@ struct Experiment {
   std::uint64_t seeds = 20;
   std::uint64_t seed_start = 1;
   double time_limit = 60.0;
+  std::string clock = "virtual";   ///< "virtual" or "wall" (human time)
   std::vector<RunConfig> configs;  ///< distinct, in the order the sweeps list them
   ReportSpec report;
 };

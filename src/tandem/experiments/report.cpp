@@ -44,6 +44,7 @@ struct Summary {
   std::size_t solved = 0;
   std::size_t valid = 0;
   Interval success, time, nodes, edges, checks;
+  Interval waited;  ///< seconds a simulated person waited for the roadmap (human time)
   double share[kNodeSources] = {};  ///< mean share of nodes by source
   bool time_censored = false;       ///< the median run did not solve: the median is the limit
 };
@@ -51,8 +52,9 @@ struct Summary {
 Summary summarise(const std::vector<const RunRecord*>& runs) {
   Summary s;
   s.runs = runs.size();
-  std::vector<double> time, nodes, edges, checks;
+  std::vector<double> time, nodes, edges, checks, waited;
   for (const RunRecord* r : runs) {
+    waited.push_back(r->operator_wait_s);
     s.solved += r->solved ? 1 : 0;
     s.valid += r->path_valid ? 1 : 0;
     // A run that did not solve counts at the time limit (OMPL's convention).
@@ -72,6 +74,7 @@ Summary summarise(const std::vector<const RunRecord*>& runs) {
   s.nodes = median_interval(nodes);
   s.edges = median_interval(edges);
   s.checks = median_interval(checks);
+  s.waited = median_interval(waited);
   s.time_censored = 2 * s.solved < s.runs;
   return s;
 }
@@ -304,6 +307,13 @@ void write_introduction(std::ostream& o, const Experiment& x, const Problem& pro
     o << " (seeds " << *seeds.begin() << "–" << *seeds.rbegin() << ")";
   o << "; time limit " << number(x.time_limit) << " s per run. Produced by `" << command
     << "`.\n\n";
+  if (x.clock == "wall") {
+    o << "In human time: the operator is a simulated person with human limits (a 6D mouse as a "
+         "rate device, a reaction delay, smooth steering) on its own thread, the planner on "
+         "another, one run at a time; times are the person's wall-clock seconds. A planner "
+         "alone had the same two cores. Person waited: seconds the person spent going back to "
+         "the roadmap.\n\n";
+  }
   o << "Medians over the seeds, with 95% confidence intervals in brackets (order statistics; "
        "none for fewer than 6 runs). A run that did not solve counts at the time limit, and a "
        "median time marked > is such a run. Solved: share of runs, with its 95% Wilson interval. "
@@ -312,7 +322,7 @@ void write_introduction(std::ostream& o, const Experiment& x, const Problem& pro
 }
 
 /// A table's heading and alignment lines.
-void write_table_head(std::ostream& o, const Layout& l, bool quote_paper) {
+void write_table_head(std::ostream& o, const Layout& l, bool quote_paper, bool human_time) {
   o << '|';
   for (const std::string& n : l.varying) {
     if (n != l.panels)
@@ -320,6 +330,8 @@ void write_table_head(std::ostream& o, const Layout& l, bool quote_paper) {
   }
   o << " solved | time s | nodes | edges | collision checks | nodes random / operator / contact "
        "|";
+  if (human_time)
+    o << " person waited s |";
   if (quote_paper)
     o << " paper |";
   o << "\n|";
@@ -327,7 +339,8 @@ void write_table_head(std::ostream& o, const Layout& l, bool quote_paper) {
     if (n != l.panels)
       o << " --- |";
   }
-  o << " ---: | ---: | ---: | ---: | ---: | ---: |" << (quote_paper ? " --- |" : "") << '\n';
+  o << " ---: | ---: | ---: | ---: | ---: | ---: |" << (human_time ? " ---: |" : "")
+    << (quote_paper ? " --- |" : "") << '\n';
 }
 
 /// A configuration's row of a table.
@@ -349,6 +362,8 @@ void write_table_row(std::ostream& o, const Experiment& x, const Layout& l, cons
   o << ' ' << solved_text << " | " << (s.time_censored ? "> " : "") << with_interval(s.time, false)
     << " | " << with_interval(s.nodes, true) << " | " << number(std::round(s.edges.value), 6)
     << " | " << number(std::round(s.checks.value), 6) << " | " << share << " |";
+  if (x.clock == "wall")
+    o << ' ' << with_interval(s.waited, false) << " |";
   if (!x.report.paper.empty()) {
     auto p = x.report.paper.find(l.rows.empty() ? "" : c.value_text(l.rows));
     o << ' ' << (p == x.report.paper.end() ? "" : p->second) << " |";
@@ -383,7 +398,7 @@ std::string format_report(const Experiment& x, const Problem& problem,
   for (const std::string& panel : g.panels) {
     if (!l.panels.empty())
       o << "## " << l.panels << " = " << panel << "\n\n";
-    write_table_head(o, l, !x.report.paper.empty());
+    write_table_head(o, l, !x.report.paper.empty(), x.clock == "wall");
     for (const auto& [config, s] : g.rows(x, panel))
       write_table_row(o, x, l, *config, s);
     o << '\n';

@@ -27,11 +27,14 @@ const OperatorState* VirtualTimeFeed::at(std::uint64_t iteration, const RoadmapV
   return &current_;
 }
 
-const OperatorState* LiveFeed::at(std::uint64_t iteration, const RoadmapView* /*roadmap*/) {
+const OperatorState* LiveFeed::at(std::uint64_t iteration, const RoadmapView* roadmap) {
   const OperatorState* s = channel_.latest();
   if (s != nullptr && s->sequence != last_sequence_) {
     last_sequence_ = s->sequence;
-    record_.push_back({iteration, *s});
+    if (keep_record_)
+      record_.push_back({iteration, *s});
+    if (roadmap_distance_ != nullptr && roadmap != nullptr)
+      roadmap_distance_->publish(roadmap->distance_to_roadmap(s->device.q_device));
   }
   return s;
 }

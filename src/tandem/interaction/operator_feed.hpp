@@ -70,7 +70,12 @@ struct FeedRecord {
 
 class LiveFeed final : public OperatorFeed {
  public:
-  explicit LiveFeed(LatestValue<OperatorState>& channel) : channel_(channel) {}
+  /// With `roadmap_distance`, each new state the planner takes publishes there how far the tree
+  /// is from its q_device (what a watching operator sees, see Pacer). Without `keep_record`,
+  /// nothing is recorded (a run that is not journaled).
+  explicit LiveFeed(LatestValue<OperatorState>& channel,
+                    LatestValue<double>* roadmap_distance = nullptr, bool keep_record = true)
+      : channel_(channel), roadmap_distance_(roadmap_distance), keep_record_(keep_record) {}
   const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
   const std::vector<FeedRecord>& record() const { return record_; }
   /// Hands over the record so far and starts a new one (a journal writes it away as it grows).
@@ -81,6 +86,8 @@ class LiveFeed final : public OperatorFeed {
 
  private:
   LatestValue<OperatorState>& channel_;
+  LatestValue<double>* roadmap_distance_;
+  bool keep_record_;
   std::uint64_t last_sequence_ = 0;
   std::vector<FeedRecord> record_;
 };

@@ -32,6 +32,9 @@ class OperatorSource {
   /// How far (metric distance) the operator lets q_device get from the roadmap before it waits
   /// and goes back (see Pacer); infinity for a source that does not watch the roadmap (a trace).
   virtual double lead() const { return std::numeric_limits<double>::infinity(); }
+  /// How late (operator time) the operator notices what the roadmap does (see Pacer); 0 but for
+  /// a simulated person in human time.
+  virtual double reaction_delay() const { return 0.0; }
   /// The time after which the reading no longer changes (the end of a guide or a trace), if any.
   virtual double end_time() const = 0;
   virtual std::string describe() const = 0;

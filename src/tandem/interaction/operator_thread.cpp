@@ -36,8 +36,9 @@ void OperatorThread::run() {
   const Stopwatch watch;
   auto next = Clock::now();
   std::uint64_t sequence = 0;
-  Pacer pacer(roadmap_ != nullptr ? model_.source().lead()
-                                  : std::numeric_limits<double>::infinity());
+  Pacer pacer(
+      roadmap_ != nullptr ? model_.source().lead() : std::numeric_limits<double>::infinity(),
+      model_.source().reaction_delay());
   while (!stop_.load(std::memory_order_relaxed)) {
     const double t = watch.seconds();
     const double* seen = roadmap_ != nullptr ? roadmap_->latest() : nullptr;
@@ -45,6 +46,8 @@ void OperatorThread::run() {
     channel_.publish(model_.compute(t, pace, ++sequence));
     published_.store(sequence, std::memory_order_relaxed);
     elapsed_s_.store(watch.seconds(), std::memory_order_relaxed);
+    waits_.store(pacer.waits(), std::memory_order_relaxed);
+    waited_s_.store(pacer.waited(), std::memory_order_relaxed);
     next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s_));
     const auto now = Clock::now();
     if (next > now) {

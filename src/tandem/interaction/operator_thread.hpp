@@ -7,6 +7,7 @@
 // model is used only by the thread. published() and achieved_rate() may be read from any thread.
 
 #include <atomic>
+#include <cstdint>
 #include <thread>
 
 #include "tandem/interaction/latest_value.hpp"
@@ -30,6 +31,10 @@ class OperatorThread {
   std::uint64_t published() const { return published_.load(std::memory_order_relaxed); }
   /// States per second actually published (the loop's rate, nearest-obstacle query included).
   double achieved_rate() const;
+  /// A simulated operator that watches the roadmap: the states at which it found the roadmap
+  /// beyond its lead, and the seconds it spent going back to it (Pacer).
+  std::uint64_t waits() const { return waits_.load(std::memory_order_relaxed); }
+  double waited_s() const { return waited_s_.load(std::memory_order_relaxed); }
 
  private:
   void run();
@@ -41,6 +46,8 @@ class OperatorThread {
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> published_{0};
   std::atomic<double> elapsed_s_{0.0};
+  std::atomic<std::uint64_t> waits_{0};
+  std::atomic<double> waited_s_{0.0};
   std::thread thread_;
 };
 

@@ -4,20 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "tandem/operators/human_limits.hpp"
+
 namespace tandem {
-namespace {
-
-/// A pose the space can hold: inside the bounds, a unit quaternion, planar if the space is.
-Config admissible(const SE3Space& space, Config q) {
-  q.t = q.t.cwiseMax(space.bounds().min).cwiseMin(space.bounds().max);
-  q.q.normalize();
-  if (space.planar())
-    q = space.planar_config(q.t.x(), q.t.y(), SE3Space::yaw(q.q));
-  return q;
-}
-
-}  // namespace
-
 std::string_view to_string(OperatorInput input) {
   switch (input) {
     case OperatorInput::simulated:
@@ -48,9 +37,8 @@ OperatorSwitch::OperatorSwitch(const SE3Space& space,
       no_spacenav_(std::move(no_spacenav)),
       input_(simulated_ != nullptr ? OperatorInput::simulated : OperatorInput::browser),
       held_(start),
-      // Full deflection crosses a tenth of the scene in a second, or turns a quarter turn.
-      linear_speed_(0.1 * space.translation_extent()),
-      angular_speed_(1.57) {}
+      linear_speed_(spacemouse_scale(space).linear),
+      angular_speed_(spacemouse_scale(space).angular) {}
 
 DeviceReading OperatorSwitch::read_paced(double t, double pace) const {
   OperatorInput input;
@@ -81,7 +69,7 @@ DeviceReading OperatorSwitch::read_paced(double t, double pace) const {
     const double angle = angular_speed * dt * w.norm();
     if (angle > 0.0)
       q.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized())) * q.q;
-    reading.q_device = admissible(space_, q);
+    reading.q_device = space_.admissible(q);
     reading.velocity.head<3>() = linear_speed * v;
     reading.velocity.tail<3>() = angular_speed * w;
     reading.buttons = spacenav_->buttons();
@@ -96,6 +84,10 @@ DeviceReading OperatorSwitch::read_paced(double t, double pace) const {
 
 double OperatorSwitch::lead() const {
   return simulated_ != nullptr ? simulated_->lead() : std::numeric_limits<double>::infinity();
+}
+
+double OperatorSwitch::reaction_delay() const {
+  return simulated_ != nullptr ? simulated_->reaction_delay() : 0.0;
 }
 
 double OperatorSwitch::end_time() const {
@@ -127,7 +119,7 @@ bool OperatorSwitch::select(OperatorInput input, std::string* why) {
 }
 
 void OperatorSwitch::set_pose(const Config& q, std::uint64_t input_id) {
-  const Config pose = admissible(space_, q);
+  const Config pose = space_.admissible(q);
   const std::lock_guard lock(mutex_);
   input_ = OperatorInput::browser;
   held_ = pose;

@@ -43,6 +43,7 @@ class OperatorSwitch final : public OperatorSource {
   DeviceReading read(double t) const override { return read_paced(t, t); }
   DeviceReading read_paced(double t, double pace) const override;
   double lead() const override;
+  double reaction_delay() const override;
   double end_time() const override;
   std::string describe() const override;
 

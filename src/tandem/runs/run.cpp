@@ -4,6 +4,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/operators/guide_follower.hpp"
+#include "tandem/operators/rate_device_operator.hpp"
 #include "tandem/operators/trace.hpp"
 #include "tandem/planning/planner_registry.hpp"
 #include "tandem/runs/portfolio.hpp"
@@ -38,7 +39,12 @@ std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, cons
   if (!(spec.operator_speed > 0.0))
     throw InputError("--operator-speed", "must be positive");
   profile.speed *= spec.operator_speed;
-  return std::make_shared<GuideFollower>(problem.space, problem.guide, profile, spec.operator_seed);
+  auto follower =
+      std::make_shared<GuideFollower>(problem.space, problem.guide, profile, spec.operator_seed);
+  if (clock == OperatorClock::ticks)
+    return follower;
+  return std::make_shared<RateDeviceOperator>(problem.space, std::move(follower),
+                                              human_limits(problem.space));
 }
 
 RunOutcome execute_run(const Problem& problem, const RunSpec& spec) {

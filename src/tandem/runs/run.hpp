@@ -30,6 +30,9 @@ struct RunOutcome {
   /// Operator updates at which a simulated operator found the roadmap beyond its lead and went
   /// back.
   std::uint64_t operator_waits = 0;
+  /// Seconds a simulated person in human time spent going back to the roadmap (execute_wall_run;
+  /// 0 in virtual time).
+  double operator_wait_s = 0.0;
   double range = 0.0;
   /// tree_digest() of the planner's trees when it stopped: same spec, same digest (for runs that
   /// end by solving or by an iteration limit; a time limit stops at a machine-dependent point).
@@ -52,8 +55,10 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
 RunOutcome planner_outcome(const Problem& problem, const Planner& planner, PlannerStatus status);
 
 /// The operator source of a spec: a guide follower or a trace player, on the given clock
-/// (planner iterations for runs in virtual time, seconds for live sessions). Throws InputError for
-/// a trace recorded on the other clock.
+/// (planner iterations for runs in virtual time, seconds for live sessions and runs in human time).
+/// On the wall clock, a guide follower is a person's intent, done through a rate device within
+/// human limits (RateDeviceOperator); a trace in seconds was recorded from a person and plays as
+/// it is. Throws InputError for a trace recorded on the other clock.
 std::shared_ptr<const OperatorSource> make_operator(const Problem& problem, const RunSpec& spec,
                                                     OperatorClock clock = OperatorClock::ticks);
 

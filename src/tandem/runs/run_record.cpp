@@ -31,6 +31,7 @@ RunRecord make_record(const std::string& problem, const std::string& config,
   r.operator_iterations = s.operator_iterations;
   r.contact_entries = s.contact_entries;
   r.operator_waits = outcome.operator_waits;
+  r.operator_wait_s = outcome.operator_wait_s;
   r.tree_digest = format_digest(outcome.tree_digest);
   r.threads = outcome.threads;
   r.member = outcome.member;
@@ -68,13 +69,23 @@ void visit_fields(Record& r, Visit&& field) {
   field("tree_digest", r.tree_digest);
   field("threads", r.threads);
   field("member", r.member);
+  field("operator_wait_s", r.operator_wait_s);
+  field("clock", r.clock);
 }
 
-/// A field that records written before it existed lack: operator_waits 0, threads 1, member 0.
+/// The fields that records written before them lack, and their value then: operator_waits 0,
+/// threads 1, member 0, operator_wait_s 0, clock "virtual".
+bool added_later(std::string_view name) {
+  return name == "operator_waits" || name == "threads" || name == "member" ||
+         name == "operator_wait_s" || name == "clock";
+}
+
 template <class T>
 T missing_value(std::string_view name) {
   if constexpr (std::is_arithmetic_v<T>)
     return name == "threads" ? T{1} : T{};
+  else if constexpr (std::is_same_v<T, std::string>)
+    return name == "clock" ? T{"virtual"} : T{};
   else
     return T{};
 }
@@ -105,9 +116,7 @@ std::optional<RunRecord> parse_record(const std::string& line) {
     RunRecord r;
     visit_fields(r, [&](const char* name, auto& value) {
       using T = std::decay_t<decltype(value)>;
-      const std::string_view n = name;
-      const bool added_later = n == "operator_waits" || n == "threads" || n == "member";
-      value = added_later && !j.contains(name) ? missing_value<T>(n) : j.at(name).get<T>();
+      value = added_later(name) && !j.contains(name) ? missing_value<T>(name) : j.at(name).get<T>();
     });
     for (std::size_t k = 0; k < kNodeSources; ++k)
       r.nodes_by_source[k] = j.at("nodes_by_source").at(source_name(k)).get<std::size_t>();

@@ -34,9 +34,13 @@ struct RunRecord {
   std::uint64_t operator_iterations = 0;
   std::uint64_t contact_entries = 0;
   std::uint64_t operator_waits = 0;  ///< RunOutcome::operator_waits
-  std::string tree_digest;           ///< hex of RunOutcome::tree_digest
-  unsigned threads = 1;              ///< RunOutcome::threads
-  unsigned member = 0;               ///< RunOutcome::member
+  double operator_wait_s = 0.0;      ///< RunOutcome::operator_wait_s
+  /// The experiment's clock: "virtual" (the operator steps with the planner's iterations) or
+  /// "wall" (human time: a simulated person on its own thread, see wall_run.hpp).
+  std::string clock = "virtual";
+  std::string tree_digest;  ///< hex of RunOutcome::tree_digest
+  unsigned threads = 1;     ///< RunOutcome::threads
+  unsigned member = 0;      ///< RunOutcome::member
 
   /// Identifies the run within an experiment: configuration and seed.
   std::string key() const { return config + " #" + std::to_string(seed); }

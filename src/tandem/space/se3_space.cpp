@@ -78,6 +78,14 @@ bool lexicographic_less(const Config& a, const Config& b) {
   return false;
 }
 
+Config SE3Space::admissible(Config q) const {
+  q.t = q.t.cwiseMax(bounds_.min).cwiseMin(bounds_.max);
+  q.q.normalize();
+  if (planar())
+    q = planar_config(q.t.x(), q.t.y(), yaw(q.q));
+  return q;
+}
+
 Config SE3Space::interpolate(const Config& a, const Config& b, double s) const {
   Config r;
   r.t = a.t + s * (b.t - a.t);

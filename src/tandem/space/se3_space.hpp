@@ -68,6 +68,9 @@ class SE3Space {
   Config sample_uniform(Rng& rng) const;
 
   bool satisfies_bounds(const Config& q) const { return bounds_.contains(q.t); }
+  /// A pose the space can hold: q clamped to the bounds, its quaternion normalised, and for a
+  /// planar space put on the plane with its yaw.
+  Config admissible(Config q) const;
 
   /// Length of the bounds' diagonal (over x, y only for a planar space).
   double translation_extent() const { return translation_extent_; }
