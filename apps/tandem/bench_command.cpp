@@ -101,9 +101,11 @@ BenchResult run_runs(const BenchArgs& args, const Experiment& experiment, const 
   if (!args.quiet) {
     std::cerr << "tandem bench: " << experiment.name << " on " << problem.name << ", "
               << experiment.configs.size() << " configurations x "
-              << args.seeds.value_or(experiment.seeds) << " seeds, " << options.jobs << " workers, "
-              << experiment.time_limit << " s per run; results in " << options.out_dir.string()
-              << '\n';
+              << args.seeds.value_or(experiment.seeds) << " seeds, "
+              << (experiment.clock == "wall" ? std::string("in human time (one run at a time)")
+                                             : std::to_string(options.jobs) + " workers")
+              << ", " << experiment.time_limit << " s per run; results in "
+              << options.out_dir.string() << '\n';
   }
   BenchResult result = run_experiment(experiment, problem, options);
   std::signal(SIGINT, SIG_DFL);

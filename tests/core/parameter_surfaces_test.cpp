@@ -221,9 +221,9 @@ TEST(ParameterSurfaces, TheViewerIsToldEveryLiveTunableOfItsPlanner) {
       }
     }
   }
-  // Authority sharing announces alpha, contact, N, d, the clearance, the surfaces and the turn;
-  // the I-RRT its own; the computer alone nothing.
-  EXPECT_EQ(announced_parameters("interactive-contact", {}).size(), 7u);
+  // Authority sharing announces alpha, automatic alpha, contact, N, d, the clearance, the
+  // surfaces and the turn; the I-RRT its own; the computer alone nothing.
+  EXPECT_EQ(announced_parameters("interactive-contact", {}).size(), 8u);
   EXPECT_EQ(announced_parameters("irrt", {}).size(), 5u);
   EXPECT_TRUE(announced_parameters("birrt", {}).empty());
 }

@@ -47,6 +47,8 @@ export class StatusPanel {
       ['nodes', fmt(m.nodes)],
       ['edges', fmt(m.edges)],
       ['random / operator / contact', `${fmt(src[1])} / ${fmt(src[2])} / ${fmt(src[3])}`],
+      ['authority α', typeof m.alpha === 'number'
+        ? `${fmt(m.alpha, 2)} ${m.settings?.auto_alpha ? '(automatic)' : '(pinned)'}` : '—'],
       ['collision checks', fmt(m.collision_checks)],
       ['operator loop', m.operator_rate_hz === undefined ? '—' : `${fmt(m.operator_rate_hz)} Hz`],
       ['input', m.input],

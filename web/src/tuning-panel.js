@@ -30,7 +30,14 @@ export class TuningPanel {
       return;
     }
     this.note('');
-    this.connection.send({ type: 'params', [control.parameter.name]: value });
+    const { name } = control.parameter;
+    const message = { type: 'params', [name]: value };
+    // Automatic alpha: turning it off, or setting alpha by hand, pins alpha (where it is now).
+    if (name === 'auto_alpha' && value === false && typeof this.alphaNow === 'number') {
+      message.alpha = Math.round(this.alphaNow * 1000) / 1000;
+    }
+    if (name === 'alpha' && this.autoAlpha) message.auto_alpha = false;
+    this.connection.send(message);
   }
 
   note(text, cls = '') {
@@ -43,6 +50,8 @@ export class TuningPanel {
    * takes no tuning. */
   onStatus(m) {
     const settings = m.settings ?? {};
+    this.alphaNow = m.alpha;
+    this.autoAlpha = settings.auto_alpha === true;
     for (const c of this.controls) {
       if (document.activeElement === c.input || !Object.hasOwn(settings, c.parameter.name)) continue;
       c.show(settings[c.parameter.name]);

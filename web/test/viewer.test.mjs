@@ -4,6 +4,7 @@
 // still replays to the identical tree, the tuning panel has the controls of the parameters the
 // session announces, a request without the token is refused, hostile messages
 // are refused without disturbing the planner, a replay drives the viewer, the path can be saved,
+// automatic α moves and can be pinned,
 // the layered drawing for software renderers shows the same picture as drawing everything.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -423,6 +424,40 @@ test('changing α in the viewer changes the share of operator nodes', { timeout:
     assert.ok(computer.added > 50 && operator.added > 50, `nodes were added (${computer.added}, ${operator.added})`);
     assert.ok(operator.share > computer.share + 0.2,
       `operator nodes: ${(100 * computer.share).toFixed(0)}% at α 0.9, ${(100 * operator.share).toFixed(0)}% at α 0.1`);
+  } finally {
+    await stopTandem(run);
+  }
+});
+
+test('automatic α: the viewer shows α moving; unticking it, or setting α by hand, pins α', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('auto-alpha', ['cluttered-2', '--mode', 'interactive-contact',
+    '--auto-alpha', 'true']));
+  try {
+    const page = await openViewer(browser, run);
+    await waitFor(page, () => typeof window.tandem.status?.alpha === 'number');
+    const seen = new Set();
+    for (let k = 0; k < 30; ++k) {
+      seen.add(await page.evaluate(() => window.tandem.status.alpha));
+      await sleep(100);
+    }
+    const values = [...seen];
+    assert.ok(values.length > 3, `α moved: ${values.join(', ')}`);
+    assert.ok(values.every((a) => a >= 0.1 && a <= 0.9), `α within its floor: ${values.join(', ')}`);
+    assert.match(await page.locator('#status').innerText(), /authority α\s+0\.\d\d \(automatic\)/);
+    // Unticking pins α where it was.
+    const before = await page.evaluate(() => window.tandem.status.alpha);
+    await page.locator('#auto_alpha').uncheck();
+    await waitFor(page, () => window.tandem.status.settings.auto_alpha === false);
+    const pinned = await page.evaluate(() => window.tandem.status.settings.alpha);
+    assert.ok(Math.abs(pinned - before) < 0.2, `pinned at ${pinned}, shown ${before} just before`);
+    await sleep(500);
+    assert.equal(await page.evaluate(() => window.tandem.status.alpha), pinned, 'α stays pinned');
+    assert.match(await page.locator('#status').innerText(), /\(pinned\)/);
+    // Ticked again it moves; setting α by hand pins it at that value.
+    await page.locator('#auto_alpha').check();
+    await waitFor(page, () => window.tandem.status.settings.auto_alpha === true);
+    await setAlpha(page, 0.3);
+    await waitFor(page, () => window.tandem.status.settings.auto_alpha === false && window.tandem.status.alpha === 0.3);
   } finally {
     await stopTandem(run);
   }

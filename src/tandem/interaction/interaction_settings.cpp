@@ -11,6 +11,32 @@ namespace {
 
 using S = InteractionSettings;
 
+/// Contact beyond one plane: edges, corners and turns (the 2016 paper's future work).
+void add_contact_shapes(ParamTable<S>& t) {
+  t.push_back(integer_param<S>(
+      {.name = "contact_surfaces",
+       .label = "contact surfaces",
+       .min = 1.0,
+       .max = 3.0,
+       .help = "Contact on edges and corners: up to this many obstacle surfaces within d (normals "
+               "30 degrees apart or more); with 2 the samples lie on the line above both tangent "
+               "planes, with 3 at the point above all three (1: the papers' one plane)",
+       .group = "sharing",
+       .live = true},
+      &S::contact_surfaces));
+  t.push_back(real_param<S>(
+      {.name = "contact_turn",
+       .label = "contact turn",
+       .unit = "deg",
+       .min = 0.0,
+       .max = 180.0,
+       .help = "Orientation change in contact: each contact sample turns the operator's "
+               "orientation about the contact normal by up to this many degrees (0: the papers')",
+       .group = "sharing",
+       .live = true},
+      &S::contact_turn_deg));
+}
+
 /// Authority sharing and contact sampling (Blin et al. 2016).
 void add_sharing(ParamTable<S>& t) {
   const double inf = std::numeric_limits<double>::infinity();
@@ -25,6 +51,14 @@ void add_sharing(ParamTable<S>& t) {
        .group = "sharing",
        .live = true},
       &S::alpha));
+  t.push_back(boolean_param<S>(
+      {.name = "auto_alpha",
+       .label = "automatic alpha",
+       .help = "Authority sharing adapts online to the progress each side makes (the 2016 papers' "
+               "future work); off pins alpha",
+       .group = "sharing",
+       .live = true},
+      &S::auto_alpha));
   t.push_back(boolean_param<S>({.name = "contact",
                                 .label = "contact sampling",
                                 .help = "Contact sampling near obstacles (Alg. 3)",
@@ -64,28 +98,7 @@ void add_sharing(ParamTable<S>& t) {
        .group = "sharing",
        .live = true},
       &S::contact_clearance));
-  t.push_back(integer_param<S>(
-      {.name = "contact_surfaces",
-       .label = "contact surfaces",
-       .min = 1.0,
-       .max = 3.0,
-       .help = "Contact on edges and corners: up to this many obstacle surfaces within d (normals "
-               "30 degrees apart or more); with 2 the samples lie on the line above both tangent "
-               "planes, with 3 at the point above all three (1: the papers' one plane)",
-       .group = "sharing",
-       .live = true},
-      &S::contact_surfaces));
-  t.push_back(real_param<S>(
-      {.name = "contact_turn",
-       .label = "contact turn",
-       .unit = "deg",
-       .min = 0.0,
-       .max = 180.0,
-       .help = "Orientation change in contact: each contact sample turns the operator's "
-               "orientation about the contact normal by up to this many degrees (0: the papers')",
-       .group = "sharing",
-       .live = true},
-      &S::contact_turn_deg));
+  add_contact_shapes(t);
 }
 
 /// The I-RRT (Taix & Flavigne 2011).

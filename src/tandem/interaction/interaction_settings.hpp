@@ -32,6 +32,9 @@ struct InteractionSettings {
   /// Authority sharing: the probability that the computer has authority (a uniform sample) in an
   /// iteration; else the operator has it. 1 is BiRRT alone, 0 the operator alone. The papers' 0.5.
   double alpha = 0.5;
+  /// Automatic authority sharing (AutoAlpha): alpha adapts to what each side contributes, from
+  /// even shares; off, alpha stays as set (the user pins it).
+  bool auto_alpha = false;
   bool contact = false;      ///< contact sampling when the operator is near an obstacle
   int contact_samples = 10;  ///< N, the papers' value
   /// d: contact mode when the object at q_device is within d of an obstacle. 0: 1.5% of the

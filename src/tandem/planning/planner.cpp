@@ -69,6 +69,7 @@ void Planner::update_counts() {
   stats_.operator_time_s = sampler.operator_time_s;
   stats_.operator_iterations = sampler.operator_iterations;
   stats_.contact_entries = sampler.contact_entries;
+  stats_.alpha = sampler.alpha;
   stats_.extensions_collision =
       extension_outcomes_[static_cast<std::size_t>(ExtendStatus::trapped)];
   stats_.extensions_reached = extension_outcomes_[static_cast<std::size_t>(ExtendStatus::reached)];

@@ -57,6 +57,8 @@ struct PlannerStats {
   /// Iterations in which the operator had authority, and how often contact mode was entered.
   std::uint64_t operator_iterations = 0;
   std::uint64_t contact_entries = 0;
+  /// Authority sharing's alpha in the latest iteration (automatic alpha moves it); NaN without.
+  double alpha = std::numeric_limits<double>::quiet_NaN();
   /// Outcomes of the extensions toward the iterations' targets (connections not included), the
   /// I-RRT's classes: Collision (nothing added), Reached, Obstacle (stopped short of the target).
   std::uint64_t extensions_collision = 0;

@@ -1,5 +1,6 @@
 #include "tandem/planning/rrt_connect.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "tandem/planning/extend.hpp"
@@ -16,6 +17,7 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       sampler_(std::move(sampler)) {
   attach(start_tree_);
   attach(goal_tree_);
+  closest_.fill(validator.space().distance(start, goal));
   // The computer alone: along the workspace guide for a share `guide`, else uniform samples.
   if (sampler_ == nullptr && settings.guide > 0.0) {
     auto guided = std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start,
@@ -63,13 +65,30 @@ bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Tar
   const Extension ext = extend(tree_a, target.q, range_, validator_, settings_.extend,
                                target.source, a_is_start ? &start_steps_ : &goal_steps_);
   count_extension(ext.status);
+  if (sampler_->wants_credit())
+    credit(tree_a, tree_b, a_is_start, ext, target.source, true);
   if (ext.status == ExtendStatus::trapped)
     return false;
   return meet(tree_a, tree_b, a_is_start, ext.node, target.source);
 }
 
+void RRTConnect::credit(const Tree& tree_a, const Tree& tree_b, bool a_is_start,
+                        const Extension& ext, NodeSource source, bool extension) {
+  double progress = 0.0;
+  if (ext.status != ExtendStatus::trapped) {
+    double& closest = closest_[a_is_start ? 0 : 1];
+    const double d = validator_.space().distance(tree_a.nodes[ext.node], tree_b.nodes[0]);
+    progress = std::max(0.0, closest - d);
+    closest = std::min(closest, d);
+  }
+  sampler_->credit(source, progress, extension);
+}
+
 bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source) {
   const Extension con = connect(tree_b, tree_a.nodes[node], source);
+  // The other tree's way toward the new node is the target's doing too.
+  if (sampler_->wants_credit())
+    credit(tree_b, tree_a, !a_is_start, con, source, false);
   if (con.status != ExtendStatus::reached)
     return false;
 

@@ -6,6 +6,12 @@
 #include "tandem/sampling/contact_sampler.hpp"
 
 namespace tandem {
+namespace {
+
+/// Progress per extension that counts as none, as a share of the space's largest extent.
+constexpr double kNoProgress = 1e-6;
+
+}  // namespace
 
 AuthoritySharing::AuthoritySharing(const SE3Space& space, const Interaction& interaction,
                                    const InteractionSettings& settings, std::uint64_t seed,
@@ -16,7 +22,8 @@ AuthoritySharing::AuthoritySharing(const SE3Space& space, const Interaction& int
       interaction_(interaction),
       settings_(settings),
       authority_rng_(seed ^ 0xa5a5a5a5deadbeefULL),
-      contact_rng_(seed ^ 0x5a5a5a5a12345678ULL) {
+      contact_rng_(seed ^ 0x5a5a5a5a12345678ULL),
+      auto_alpha_(kNoProgress * space.max_extent()) {
   if (interaction.feed == nullptr)
     throw std::invalid_argument("authority sharing needs an operator (an OperatorFeed)");
 }
@@ -25,9 +32,13 @@ void AuthoritySharing::sample(const SampleRequest& request, std::vector<Target>&
   const InteractionSettings& s =
       interaction_.parameters != nullptr ? interaction_.parameters->latest() : settings_;
   // Steps 1-2: the operator has authority when a > alpha.
-  if (authority_rng_.uniform01() > s.alpha) {
+  const double alpha = authority_share(s);
+  in_turn_ = true;
+  computer_turn_ = true;
+  if (authority_rng_.uniform01() > alpha) {
     const OperatorState* op = interaction_.feed->at(request.iteration, request.roadmap);
     if (op != nullptr) {
+      computer_turn_ = false;
       ++stats_.operator_iterations;
       if (contact_sampling(*op, s, out))
         return;
@@ -72,6 +83,20 @@ std::vector<ContactFrame> AuthoritySharing::contact_surfaces(const OperatorState
       frames.push_back(*f);
   }
   return distinct_surfaces(frames, static_cast<std::size_t>(s.contact_surfaces));
+}
+
+double AuthoritySharing::authority_share(const InteractionSettings& s) {
+  if (in_turn_)
+    auto_alpha_.record(computer_turn_, turn_progress_, turn_extensions_);
+  turn_progress_ = 0.0;
+  turn_extensions_ = 0;
+  stats_.alpha = s.auto_alpha ? auto_alpha_.alpha() : s.alpha;
+  return stats_.alpha;
+}
+
+void AuthoritySharing::credit(NodeSource /*source*/, double progress, bool extension) {
+  turn_progress_ += progress;
+  turn_extensions_ += extension ? 1 : 0;
 }
 
 SamplerStats AuthoritySharing::stats() const {

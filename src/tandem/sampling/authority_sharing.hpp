@@ -13,8 +13,10 @@
 //   7.         {q_i} <- ContactSampling(P_o, P_n, N, q_device)    (Algorithm 2)
 //   8.     else:
 //   9.         q_rand <- q_device
-// Without an operator state yet, step 3 is taken. The authority draw and the contact samples have
-// random streams of their own, so the computer's samples are those of BiRRT for the same seed.
+// Without an operator state yet, step 3 is taken. With auto_alpha, step 1's alpha is AutoAlpha's,
+// learnt from the progress the planner credits to each side's iterations. The authority draw and
+// the contact samples have random streams of their own, so the computer's samples are those of
+// BiRRT for the same seed.
 //
 // Threading: the planner thread only; the live settings are read wait-free each iteration.
 
@@ -24,6 +26,7 @@
 #include "tandem/collision/motion_validation.hpp"
 #include "tandem/interaction/contact_frame.hpp"
 #include "tandem/interaction/interaction.hpp"
+#include "tandem/sampling/auto_alpha.hpp"
 #include "tandem/sampling/target_sampler.hpp"
 
 namespace tandem {
@@ -40,8 +43,12 @@ class AuthoritySharing final : public TargetSampler {
 
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
   SamplerStats stats() const override;
+  bool wants_credit() const override { return true; }
+  void credit(NodeSource source, double progress, bool extension) override;
 
  private:
+  /// Step 1's alpha: the setting, or AutoAlpha's once the last iteration's progress is recorded.
+  double authority_share(const InteractionSettings& s);
   /// Steps 6-7: contact samples, or nothing when not in contact mode.
   bool contact_sampling(const OperatorState& op, const InteractionSettings& s,
                         std::vector<Target>& out);
@@ -58,6 +65,11 @@ class AuthoritySharing final : public TargetSampler {
   Rng authority_rng_;  ///< the authority draws, apart from the sampling stream
   Rng contact_rng_;    ///< contact samples
   SamplerStats stats_;
+  AutoAlpha auto_alpha_;
+  bool computer_turn_ = true;  ///< whose the current iteration is
+  bool in_turn_ = false;       ///< an iteration was sampled and not yet recorded
+  double turn_progress_ = 0.0;
+  int turn_extensions_ = 0;
 };
 
 }  // namespace tandem

@@ -13,6 +13,7 @@
 // Threading: sample() runs on the planner thread only.
 
 #include <cstdint>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -46,6 +47,8 @@ struct SamplerStats {
   double operator_time_s = 0.0;           ///< planner-thread time computing operator states
   std::uint64_t operator_iterations = 0;  ///< iterations in which the operator had authority
   std::uint64_t contact_entries = 0;      ///< iterations in contact mode
+  /// Authority sharing's alpha in the latest iteration (NaN for a sampler without one).
+  double alpha = std::numeric_limits<double>::quiet_NaN();
 };
 
 class TargetSampler {
@@ -54,6 +57,15 @@ class TargetSampler {
   /// Appends this iteration's targets (at least one) to `out`.
   virtual void sample(const SampleRequest& request, std::vector<Target>& out) = 0;
   virtual SamplerStats stats() const { return {}; }
+  /// The planner's feedback on this iteration's targets: for each target's extension, and for
+  /// the other tree's connection toward it (`extension` false), the progress it made toward the
+  /// other tree (scene units, 0 if trapped).
+  virtual bool wants_credit() const { return false; }
+  virtual void credit(NodeSource source, double progress, bool extension) {
+    (void)source;
+    (void)progress;
+    (void)extension;
+  }
 };
 
 /// The computer alone: one uniform sample of the space per iteration.

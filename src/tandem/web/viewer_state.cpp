@@ -162,7 +162,9 @@ json status_fields(const Planner& planner, std::string_view status, std::string_
               {"nodes", s.nodes},
               {"edges", s.edges},
               {"collision_checks", s.collision_checks},
-              {"nodes_by_source", s.nodes_by_source}};
+              {"nodes_by_source", s.nodes_by_source},
+              // Authority sharing's alpha now (automatic alpha moves it); null without sharing.
+              {"alpha", std::isfinite(s.alpha) ? json(s.alpha) : json(nullptr)}};
 }
 
 }  // namespace
