@@ -442,7 +442,8 @@ test('automatic α: the viewer shows α moving; unticking it, or setting α by h
     }
     const values = [...seen];
     assert.ok(values.length > 3, `α moved: ${values.join(', ')}`);
-    assert.ok(values.every((a) => a >= 0.1 && a <= 0.9), `α within its floor: ${values.join(', ')}`);
+    // The floor is on each side's share of the work: α, a share of the iterations, stays inside (0, 1).
+    assert.ok(values.every((a) => a > 0 && a < 1), `α a probability: ${values.join(', ')}`);
     assert.match(await page.locator('#status').innerText(), /authority α\s+0\.\d\d \(automatic\)/);
     // Unticking pins α where it was.
     const before = await page.evaluate(() => window.tandem.status.alpha);

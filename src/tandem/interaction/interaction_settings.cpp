@@ -54,8 +54,8 @@ void add_sharing(ParamTable<S>& t) {
   t.push_back(boolean_param<S>(
       {.name = "auto_alpha",
        .label = "automatic alpha",
-       .help = "Authority sharing adapts online to the progress each side makes (the 2016 papers' "
-               "future work); off pins alpha",
+       .help = "Authority sharing adapts online: the planner's work follows what each side's "
+               "targets grow per query (the 2016 papers' future work); off pins alpha",
        .group = "sharing",
        .live = true},
       &S::auto_alpha));

@@ -26,6 +26,12 @@ void OperatorThread::stop() {
     thread_.join();
 }
 
+void OperatorThread::wait_for_first_state(const std::atomic<bool>* cancel) const {
+  while (channel_.latest() == nullptr &&
+         (cancel == nullptr || !cancel->load(std::memory_order_relaxed)))
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+}
+
 double OperatorThread::achieved_rate() const {
   const double elapsed = elapsed_s_.load(std::memory_order_relaxed);
   return elapsed > 0.0 ? static_cast<double>(published()) / elapsed : 0.0;

@@ -28,6 +28,9 @@ class OperatorThread {
   OperatorThread& operator=(const OperatorThread&) = delete;
 
   void stop();
+  /// Blocks the caller until the first state is in the channel (the planner starts with it in
+  /// hand), or until `cancel` (may be null) is set.
+  void wait_for_first_state(const std::atomic<bool>* cancel = nullptr) const;
   std::uint64_t published() const { return published_.load(std::memory_order_relaxed); }
   /// States per second actually published (the loop's rate, nearest-obstacle query included).
   double achieved_rate() const;

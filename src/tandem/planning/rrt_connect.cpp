@@ -17,7 +17,6 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       sampler_(std::move(sampler)) {
   attach(start_tree_);
   attach(goal_tree_);
-  closest_.fill(validator.space().distance(start, goal));
   // The computer alone: along the workspace guide for a share `guide`, else uniform samples.
   if (sampler_ == nullptr && settings.guide > 0.0) {
     auto guided = std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start,
@@ -52,6 +51,8 @@ bool RRTConnect::iterate() {
   // 1. The targets.
   show_new_nodes();
   targets_.clear();
+  if (sampler_->wants_credit())
+    credited_queries_ = queries();
   sampler_->sample({stats().iterations, this, &rng_}, targets_);
   for (const Target& target : targets_) {
     if (add_tree(tree_a, tree_b, a_is_start, target))
@@ -65,30 +66,30 @@ bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Tar
   const Extension ext = extend(tree_a, target.q, range_, validator_, settings_.extend,
                                target.source, a_is_start ? &start_steps_ : &goal_steps_);
   count_extension(ext.status);
-  if (sampler_->wants_credit())
-    credit(tree_a, tree_b, a_is_start, ext, target.source, true);
-  if (ext.status == ExtendStatus::trapped)
+  grown_ = grown(tree_a, ext);
+  if (ext.status == ExtendStatus::trapped) {
+    if (sampler_->wants_credit())
+      credit(target.source);
     return false;
+  }
   return meet(tree_a, tree_b, a_is_start, ext.node, target.source);
 }
 
-void RRTConnect::credit(const Tree& tree_a, const Tree& tree_b, bool a_is_start,
-                        const Extension& ext, NodeSource source, bool extension) {
-  double progress = 0.0;
-  if (ext.status != ExtendStatus::trapped) {
-    double& closest = closest_[a_is_start ? 0 : 1];
-    const double d = validator_.space().distance(tree_a.nodes[ext.node], tree_b.nodes[0]);
-    progress = std::max(0.0, closest - d);
-    closest = std::min(closest, d);
-  }
-  sampler_->credit(source, progress, extension);
+void RRTConnect::credit(NodeSource source) {
+  const std::uint64_t now = queries();
+  sampler_->credit(source, grown_, now - credited_queries_);
+  credited_queries_ = now;
+}
+
+double RRTConnect::grown(const Tree& tree, const Extension& ext) const {
+  return ext.added ? validator_.space().distance(tree.nodes[ext.near], tree.nodes[ext.node]) : 0.0;
 }
 
 bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source) {
   const Extension con = connect(tree_b, tree_a.nodes[node], source);
   // The other tree's way toward the new node is the target's doing too.
   if (sampler_->wants_credit())
-    credit(tree_b, tree_a, !a_is_start, con, source, false);
+    credit(source);
   if (con.status != ExtendStatus::reached)
     return false;
 
@@ -107,6 +108,7 @@ Extension RRTConnect::connect(Tree& tree, const Config& q, NodeSource source) {
   Extension ext;
   do {
     ext = extend(tree, target, range_, validator_, settings_.extend, source);
+    grown_ += grown(tree, ext);
   } while (ext.status == ExtendStatus::advanced);
   return ext;
 }

@@ -52,10 +52,11 @@ class RRTConnect final : public Planner {
   /// Iterations before the passage islands are first aimed at: most problems are solved sooner.
   static constexpr std::uint64_t kPassageWarmup = 2000;
 
-  /// The sampler's feedback (TargetSampler::credit): how much nearer to the other tree's root the
-  /// extension (or, `extension` false, the connection) from a tree brought it than it had come.
-  void credit(const Tree& tree_a, const Tree& tree_b, bool a_is_start, const Extension& ext,
-              NodeSource source, bool extension);
+  /// The sampler's feedback (TargetSampler::credit) after a target's extension and connection:
+  /// the length the trees grew (grown_) and the queries it cost since the previous credit.
+  void credit(NodeSource source);
+  /// The length of the motion an extension added to `tree` (0 if it added nothing).
+  double grown(const Tree& tree, const Extension& ext) const;
   /// Steps 2-3 for one target; true when the trees meet.
   bool add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target);
   /// CONNECT (Kuffner & LaValle): EXTEND `tree` toward q while it ADVANCES; the last extension.
@@ -86,9 +87,10 @@ class RRTConnect final : public Planner {
   std::vector<Target> targets_;
   /// Null when `passages` is 0 (and for the interactive planners).
   std::unique_ptr<PassageIslands> islands_;
-  std::uint64_t island_queries_ = 0;  ///< the checker's queries spent on islands
-  /// Per tree (start, goal): the nearest it has come to the other tree's root.
-  std::array<double, 2> closest_{};
+  std::uint64_t island_queries_ = 0;    ///< the checker's queries spent on islands
+  std::uint64_t credited_queries_ = 0;  ///< queries() when the sampler was last credited
+  /// The length the trees grew for the current target: its extension and the connection.
+  double grown_ = 0.0;
 };
 
 }  // namespace tandem

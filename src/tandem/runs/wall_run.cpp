@@ -1,8 +1,5 @@
 #include "tandem/runs/wall_run.hpp"
 
-#include <chrono>
-#include <thread>
-
 #include "tandem/interaction/operator_thread.hpp"
 #include "tandem/planning/planner_registry.hpp"
 
@@ -30,8 +27,7 @@ RunOutcome execute_wall_run(const Problem& problem, const RunSpec& spec,
   OperatorThread person(OperatorModel(checker, source), channel, kOperatorRateHz,
                         &roadmap_distance);
   // The planner starts with the person's first state in hand, as in a live session.
-  while (channel.latest() == nullptr)
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  person.wait_for_first_state();
   Termination termination;
   termination.time_limit_s = spec.time_limit;
   termination.max_iterations = spec.max_iterations;

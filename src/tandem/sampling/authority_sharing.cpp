@@ -8,8 +8,8 @@
 namespace tandem {
 namespace {
 
-/// Progress per extension that counts as none, as a share of the space's largest extent.
-constexpr double kNoProgress = 1e-6;
+/// Growth per collision query that counts as none, as a share of the space's largest extent.
+constexpr double kNoProgress = 1e-9;
 
 }  // namespace
 
@@ -87,16 +87,18 @@ std::vector<ContactFrame> AuthoritySharing::contact_surfaces(const OperatorState
 
 double AuthoritySharing::authority_share(const InteractionSettings& s) {
   if (in_turn_)
-    auto_alpha_.record(computer_turn_, turn_progress_, turn_extensions_);
+    auto_alpha_.record(computer_turn_, turn_progress_, static_cast<double>(turn_queries_));
   turn_progress_ = 0.0;
-  turn_extensions_ = 0;
+  turn_queries_ = 0;
   stats_.alpha = s.auto_alpha ? auto_alpha_.alpha() : s.alpha;
   return stats_.alpha;
 }
 
-void AuthoritySharing::credit(NodeSource /*source*/, double progress, bool extension) {
+void AuthoritySharing::credit(NodeSource /*source*/, double progress, std::uint64_t queries) {
   turn_progress_ += progress;
-  turn_extensions_ += extension ? 1 : 0;
+  // A target costs a nearest-neighbour search even when it needs no query (a node already): one
+  // unit, so that an idle hand's iterations are not free.
+  turn_queries_ += queries + 1;
 }
 
 SamplerStats AuthoritySharing::stats() const {

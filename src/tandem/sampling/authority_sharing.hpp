@@ -44,7 +44,7 @@ class AuthoritySharing final : public TargetSampler {
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
   SamplerStats stats() const override;
   bool wants_credit() const override { return true; }
-  void credit(NodeSource source, double progress, bool extension) override;
+  void credit(NodeSource source, double progress, std::uint64_t queries) override;
 
  private:
   /// Step 1's alpha: the setting, or AutoAlpha's once the last iteration's progress is recorded.
@@ -69,7 +69,7 @@ class AuthoritySharing final : public TargetSampler {
   bool computer_turn_ = true;  ///< whose the current iteration is
   bool in_turn_ = false;       ///< an iteration was sampled and not yet recorded
   double turn_progress_ = 0.0;
-  int turn_extensions_ = 0;
+  std::uint64_t turn_queries_ = 0;
 };
 
 }  // namespace tandem

@@ -3,21 +3,27 @@
 // automatically"), with no parameter for the user to tune.
 //
 // Each iteration is either the computer's (a uniform sample) or the operator's (q_device, or
-// contact samples around it). The planner credits every extension toward an iteration's targets,
-// and the other tree's connection toward the node it added, with the progress it made: how much
-// nearer the tree it grew came to the other tree's root than that tree had ever come
-// (RRTConnect::credit; 0 for a trapped extension). AutoAlpha keeps, for
-// each side, the progress per extension of its recent iterations (exponential means of progress
-// and of extensions over about kMemory of that side's iterations: an operator's iteration in
-// contact mode, N extensions, costs N times a random one and is weighed so) and gives the
-// computer authority in proportion to its share of that rate (probability matching):
-// alpha = (computer + prior) / (computer + operator + 2 prior), kept within [kFloor, 1 - kFloor]
-// so that each side keeps being tried and its rate stays current.
+// contact samples around it). The planner credits each of an iteration's targets with what its
+// extension and the other tree's connection toward the new node did: the length of motion they
+// added to the trees, and the collision queries they cost (RRTConnect::credit). The length is the
+// trees' growth into space they did not cover: a target in a region the tree already fills (a
+// uniform sample in a saturated room, a hand that stays put) is reached by a short motion or by
+// none, a trapped one adds nothing, while a target beyond the frontier (the hand entering a
+// passage, samples in an open region) adds a whole step, and a connection the whole way it went.
+// AutoAlpha keeps, for each side, exponential means of an iteration's growth and of its cost over
+// about kMemory of that side's iterations, so each side's recent growth per query, and shares the
+// planner's work by probability matching:
+//   w = (computer + prior) / (computer + operator + 2 prior), kept within [kFloor, 1 - kFloor]
+// is the computer's share of the queries (the floor keeps each side tried, its rate current),
+// and alpha is the share of the iterations that gives it, their costs being unequal (an
+// operator's iteration in contact mode, N samples, costs about N of the computer's; an idle
+// hand's, nearly nothing):
+//   alpha = w c_o / (w c_o + (1 - w) c_c),  c_c and c_o the mean queries of an iteration.
 //
-// What it does: where uniform samples carry the trees toward each other faster than a person's
-// hand (an open scene), alpha rises toward the computer; where the random trees stall before a
-// narrow passage and the operator's way goes on, it falls toward the operator; when neither makes
-// progress it drifts back toward even shares. Deterministic (a function of the credits).
+// What it does: where uniform samples grow the trees for fewer queries than the person's hand (an
+// open scene, a maze the hand walks slowly), alpha rises toward the computer; where the random
+// trees fill their regions and the operator's way goes on, it falls toward the operator. Before
+// anything is learnt the shares are even. Deterministic (a function of the credits).
 //
 // Threading: the planner thread only.
 
@@ -25,37 +31,45 @@ namespace tandem {
 
 class AutoAlpha {
  public:
-  static constexpr double kMemory = 1000.0;  ///< iterations of a side that its mean remembers
-  static constexpr double kFloor = 0.1;      ///< each side's least share of the iterations
+  static constexpr double kMemory = 1000.0;  ///< iterations of a side that its means remember
+  static constexpr double kFloor = 0.1;      ///< each side's least share of the queries
 
-  /// `prior`: the progress per extension that counts as none (scene units, e.g. 1e-6 of the
-  /// space's largest extent); it keeps alpha at even shares before anything is learnt.
+  /// `prior`: the growth per query that counts as none (scene units, e.g. 1e-9 of the space's
+  /// largest extent); it keeps even shares before anything is learnt.
   explicit AutoAlpha(double prior) : prior_(prior) {}
 
-  /// One iteration ended: whose it was, the progress its extensions made (>= 0) and how many
-  /// there were.
-  void record(bool computer, double progress, int extensions) {
+  /// One iteration ended: whose it was, the length the trees grew (>= 0) and the queries it cost.
+  void record(bool computer, double progress, double queries) {
     Side& side = sides_[computer ? 0 : 1];
     side.progress += (progress - side.progress) / kMemory;
-    side.extensions += (extensions - side.extensions) / kMemory;
+    side.queries += (queries - side.queries) / kMemory;
+  }
+
+  /// The computer's share of the planner's queries that the recent growth calls for.
+  double work_share() const {
+    const double c = computer_rate(), o = operator_rate();
+    const double w = (c + prior_) / (c + o + 2.0 * prior_);
+    return w < kFloor ? kFloor : (w > 1.0 - kFloor ? 1.0 - kFloor : w);
   }
 
   /// The probability that the computer has authority in the next iteration.
   double alpha() const {
-    const double c = computer_rate(), o = operator_rate();
-    const double a = (c + prior_) / (c + o + 2.0 * prior_);
-    return a < kFloor ? kFloor : (a > 1.0 - kFloor ? 1.0 - kFloor : a);
+    const double w = work_share();
+    const double c_c = sides_[0].queries, c_o = sides_[1].queries;
+    if (c_c <= 0.0 || c_o <= 0.0)
+      return w;  // a side's cost is not known yet
+    return w * c_o / (w * c_o + (1.0 - w) * c_c);
   }
 
-  /// Recent progress per extension of the computer's and of the operator's iterations.
+  /// Recent growth per query of the computer's and of the operator's iterations.
   double computer_rate() const { return sides_[0].rate(); }
   double operator_rate() const { return sides_[1].rate(); }
 
  private:
   struct Side {
-    double progress = 0.0;    ///< exponential mean of an iteration's progress
-    double extensions = 0.0;  ///< and of its extensions
-    double rate() const { return extensions > 0.0 ? progress / extensions : 0.0; }
+    double progress = 0.0;  ///< exponential mean of an iteration's growth
+    double queries = 0.0;   ///< and of its queries
+    double rate() const { return queries > 0.0 ? progress / queries : 0.0; }
   };
   double prior_;
   Side sides_[2];

@@ -57,14 +57,15 @@ class TargetSampler {
   /// Appends this iteration's targets (at least one) to `out`.
   virtual void sample(const SampleRequest& request, std::vector<Target>& out) = 0;
   virtual SamplerStats stats() const { return {}; }
-  /// The planner's feedback on this iteration's targets: for each target's extension, and for
-  /// the other tree's connection toward it (`extension` false), the progress it made toward the
-  /// other tree (scene units, 0 if trapped).
+  /// The planner's feedback on this iteration's targets, once per target: `progress`, the length
+  /// of motion its extension and the other tree's connection toward the new node added to the
+  /// trees (scene units, 0 if nothing was added), and what they cost: the collision queries since
+  /// the previous credit (the first credit of an iteration includes the sampler's own queries).
   virtual bool wants_credit() const { return false; }
-  virtual void credit(NodeSource source, double progress, bool extension) {
+  virtual void credit(NodeSource source, double progress, std::uint64_t queries) {
     (void)source;
     (void)progress;
-    (void)extension;
+    (void)queries;
   }
 };
 

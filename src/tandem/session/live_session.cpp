@@ -62,7 +62,7 @@ LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const Live
       switch_(live_operator(problem, spec, options.spacemouse)),
       checker_(problem.scene),
       validator_(problem.space, checker_),
-      feed_(channel_) {
+      feed_(channel_, &roadmap_distance_) {
   parameters_.set(spec_.settings.interaction);
   settings_now_ = spec_.settings.interaction;
   paused_ = options.start_paused;
@@ -170,8 +170,6 @@ void LiveSession::journal_feed() {
     journal_->operator_state(r.iteration, r.state);
   last_state_ = records.back().state;
   have_state_ = true;
-  // What a watching operator sees: how far the tree is from where it holds the object now.
-  roadmap_distance_.publish(planner_->distance_to_roadmap(last_state_.device.q_device));
 }
 
 void LiveSession::measure_latency() {
@@ -215,9 +213,7 @@ struct LiveSession::Loop {
 void LiveSession::start_operator() {
   operator_thread_ = std::make_unique<OperatorThread>(
       OperatorModel(checker_, switch_), channel_, options_.operator_rate_hz, &roadmap_distance_);
-  // The planner starts with the operator's first state in hand.
-  while (channel_.latest() == nullptr && !stop_.load(std::memory_order_relaxed))
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  operator_thread_->wait_for_first_state(&stop_);
 }
 
 bool LiveSession::step_planner(Loop& loop) {
