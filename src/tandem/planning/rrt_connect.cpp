@@ -26,6 +26,7 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
   } else if (sampler_ == nullptr) {
     sampler_ = std::make_unique<UniformSampler>(validator.space());
   }
+  credits_ = sampler_->wants_credit();
   if (settings.passages > 0.0)
     islands_ = std::make_unique<PassageIslands>(validator,
                                                 Rng(settings.seed ^ 0x6b6b6b6bc2b2ae35ULL).split());
@@ -51,7 +52,7 @@ bool RRTConnect::iterate() {
   // 1. The targets.
   show_new_nodes();
   targets_.clear();
-  if (sampler_->wants_credit())
+  if (credits_)
     credited_queries_ = queries();
   sampler_->sample({stats().iterations, this, &rng_}, targets_);
   for (const Target& target : targets_) {
@@ -68,28 +69,31 @@ bool RRTConnect::add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Tar
   count_extension(ext.status);
   grown_ = grown(tree_a, ext);
   if (ext.status == ExtendStatus::trapped) {
-    if (sampler_->wants_credit())
-      credit(target.source);
+    credit(target.source);
     return false;
   }
   return meet(tree_a, tree_b, a_is_start, ext.node, target.source);
 }
 
 void RRTConnect::credit(NodeSource source) {
+  if (!credits_)
+    return;
   const std::uint64_t now = queries();
   sampler_->credit(source, grown_, now - credited_queries_);
   credited_queries_ = now;
 }
 
 double RRTConnect::grown(const Tree& tree, const Extension& ext) const {
-  return ext.added ? validator_.space().distance(tree.nodes[ext.near], tree.nodes[ext.node]) : 0.0;
+  // Only a sampler that is credited needs it: BiRRT's extensions do not pay for the distance.
+  return credits_ && ext.added
+             ? validator_.space().distance(tree.nodes[ext.near], tree.nodes[ext.node])
+             : 0.0;
 }
 
 bool RRTConnect::meet(Tree& tree_a, Tree& tree_b, bool a_is_start, NodeId node, NodeSource source) {
   const Extension con = connect(tree_b, tree_a.nodes[node], source);
   // The other tree's way toward the new node is the target's doing too.
-  if (sampler_->wants_credit())
-    credit(source);
+  credit(source);
   if (con.status != ExtendStatus::reached)
     return false;
 

@@ -53,9 +53,11 @@ class RRTConnect final : public Planner {
   static constexpr std::uint64_t kPassageWarmup = 2000;
 
   /// The sampler's feedback (TargetSampler::credit) after a target's extension and connection:
-  /// the length the trees grew (grown_) and the queries it cost since the previous credit.
+  /// the length the trees grew (grown_) and the queries it cost since the previous credit. Nothing
+  /// for a sampler that does not want it.
   void credit(NodeSource source);
-  /// The length of the motion an extension added to `tree` (0 if it added nothing).
+  /// The length of the motion an extension added to `tree` (0 if it added nothing, or when the
+  /// sampler is not credited).
   double grown(const Tree& tree, const Extension& ext) const;
   /// Steps 2-3 for one target; true when the trees meet.
   bool add_tree(Tree& tree_a, Tree& tree_b, bool a_is_start, const Target& target);
@@ -88,6 +90,7 @@ class RRTConnect final : public Planner {
   /// Null when `passages` is 0 (and for the interactive planners).
   std::unique_ptr<PassageIslands> islands_;
   std::uint64_t island_queries_ = 0;    ///< the checker's queries spent on islands
+  bool credits_ = false;                ///< the sampler wants credit (wants_credit())
   std::uint64_t credited_queries_ = 0;  ///< queries() when the sampler was last credited
   /// The length the trees grew for the current target: its extension and the connection.
   double grown_ = 0.0;

@@ -27,6 +27,8 @@
 //
 // Threading: the planner thread only.
 
+#include <algorithm>
+
 namespace tandem {
 
 class AutoAlpha {
@@ -48,8 +50,7 @@ class AutoAlpha {
   /// The computer's share of the planner's queries that the recent growth calls for.
   double work_share() const {
     const double c = computer_rate(), o = operator_rate();
-    const double w = (c + prior_) / (c + o + 2.0 * prior_);
-    return w < kFloor ? kFloor : (w > 1.0 - kFloor ? 1.0 - kFloor : w);
+    return std::clamp((c + prior_) / (c + o + 2.0 * prior_), kFloor, 1.0 - kFloor);
   }
 
   /// The probability that the computer has authority in the next iteration.
