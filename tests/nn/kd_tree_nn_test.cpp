@@ -7,8 +7,8 @@
 namespace tandem {
 namespace {
 
-/// Feeds the same points to the k-d tree and to brute force and compares their answers by distance
-/// (ties may be broken differently).
+/// Feeds the same points to the k-d tree and to brute force and compares their answers by distance,
+/// exactly (ties may be broken differently).
 void expect_same_answers(const SE3Space& space, std::vector<Config>& points,
                          const std::vector<Config>& queries, std::size_t k) {
   KdTreeNearestNeighbors fast(space, points);
@@ -20,14 +20,13 @@ void expect_same_answers(const SE3Space& space, std::vector<Config>& points,
   ASSERT_EQ(fast.size(), points.size());
   std::vector<NodeId> a, b;
   for (const Config& q : queries) {
-    ASSERT_DOUBLE_EQ(space.distance(q, points[fast.nearest(q)]),
-                     space.distance(q, points[slow.nearest(q)]));
+    ASSERT_EQ(space.distance(q, points[fast.nearest(q)]),
+              space.distance(q, points[slow.nearest(q)]));
     fast.k_nearest(q, k, a);
     slow.k_nearest(q, k, b);
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
-      ASSERT_DOUBLE_EQ(space.distance(q, points[a[i]]), space.distance(q, points[b[i]]))
-          << "rank " << i;
+      ASSERT_EQ(space.distance(q, points[a[i]]), space.distance(q, points[b[i]])) << "rank " << i;
     }
   }
 }
@@ -84,6 +83,28 @@ TEST(KdTree, HandlesManyPointsAtOnePosition) {
   expect_same_answers(space, points, samples(space, 100, 9), 3);
 }
 
+TEST(KdTree, StaysExactWhenPointsDifferByTinyRotations) {
+  // Points and queries at a few positions and orientations, each rotated by up to 1e-3 rad (down to
+  // 1e-12): distances differ only in the rotation term, often by less than the cheap bound's
+  // margin, where a bound that overshot would skip the nearest point.
+  const SE3Space space(SpaceKind::se3, Bounds{{0, 0, 0}, {1, 1, 1}}, MetricWeights{1.0, 5.0});
+  Rng rng(13);
+  const auto bases = samples(space, 4, 14);
+  auto jitter = [&](const Config& base) {
+    Config q = base;
+    const double angle = std::pow(10.0, -3.0 - 9.0 * rng.uniform01());
+    const Eigen::Vector3d axis = space.sample_uniform(rng).t - Eigen::Vector3d::Constant(0.5);
+    q.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized())) * base.q).normalized();
+    return q;
+  };
+  std::vector<Config> points, queries;
+  for (int i = 0; i < 3000; ++i)
+    points.push_back(jitter(bases[static_cast<std::size_t>(i) % bases.size()]));
+  for (int i = 0; i < 300; ++i)
+    queries.push_back(jitter(bases[static_cast<std::size_t>(i) % bases.size()]));
+  expect_same_answers(space, points, queries, 6);
+}
+
 TEST(KdTree, GrowsIncrementallyWhileQueried) {
   const SE3Space space(SpaceKind::se3, Bounds{{-1, -1, -1}, {1, 1, 1}});
   Rng rng(10);
@@ -96,8 +117,8 @@ TEST(KdTree, GrowsIncrementallyWhileQueried) {
     fast.add(i);
     slow.add(i);
     const Config q = space.sample_uniform(rng);
-    ASSERT_DOUBLE_EQ(space.distance(q, points[fast.nearest(q)]),
-                     space.distance(q, points[slow.nearest(q)]));
+    ASSERT_EQ(space.distance(q, points[fast.nearest(q)]),
+              space.distance(q, points[slow.nearest(q)]));
   }
   fast.clear();
   EXPECT_EQ(fast.size(), 0u);

@@ -137,6 +137,39 @@ TEST(SE3Space, RotationAngleIsAccurateNearZeroAndPi) {
   }
 }
 
+TEST(SE3Space, RotationLowerBoundNeverExceedsTheAngleAndStaysWithinTenPercent) {
+  // The k-d tree skips a point when this bound reaches its current best: it must never exceed the
+  // angle as computed, at any angle (near 0 the two agree to third order), with either sign of
+  // either quaternion and with quaternions a few rounding steps from unit length.
+  Rng rng(5);
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
+  auto check = [](const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+    const double angle = SE3Space::rotation_angle(a, b);
+    const double bound = SE3Space::rotation_lower_bound(a, b);
+    ASSERT_GE(bound, 0.0);
+    ASSERT_LE(bound, angle) << angle;
+    ASSERT_GE(bound, 0.9 * angle) << angle;
+  };
+  for (double angle : {0.0, 1e-300, 1e-15, 1e-9, 1e-6, 1e-3, 0.3, 3.0, std::numbers::pi - 1e-9,
+                       std::numbers::pi}) {
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, axis));
+    const Eigen::Quaterniond id = Eigen::Quaterniond::Identity();
+    check(id, q);
+    check(q, id);
+    check(Eigen::Quaterniond(-q.coeffs()), id);
+  }
+  for (int i = 0; i < 100000; ++i) {
+    const Eigen::Quaterniond a = space3().sample_uniform(rng).q;
+    // Near a (down to rounding), anywhere, and products that are unit only up to rounding.
+    const double scale = std::pow(10.0, -16.0 * rng.uniform01());
+    const Eigen::Quaterniond near(
+        Eigen::AngleAxisd(scale, space3().sample_uniform(rng).t.normalized()));
+    check(a, near * a);
+    check(a, space3().sample_uniform(rng).q);
+    check(a * near * near * near, a);
+  }
+}
+
 TEST(SE3Space, UniformSamplesStayInBounds) {
   Rng rng(7);
   for (int i = 0; i < 20000; ++i) {

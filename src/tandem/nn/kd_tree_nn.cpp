@@ -47,7 +47,7 @@ void KdTreeNearestNeighbors::add(NodeId id) {
       break;
     n = t[node.axis] < node.split ? node.left : node.right;
   }
-  nodes_[n].bucket.push_back({t, id});
+  nodes_[n].bucket.push_back({t, points_[id].q, id});
   ++size_;
   if (nodes_[n].bucket.size() > kBucketSize)
     split_leaf(n);
@@ -107,7 +107,7 @@ void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iter
     nodes_[node].axis = -1;
     nodes_[node].bucket.clear();
     for (auto it = first; it != last; ++it)
-      nodes_[node].bucket.push_back({points_[*it].t, *it});
+      nodes_[node].bucket.push_back({points_[*it].t, points_[*it].q, *it});
     return;
   }
   auto mid = first + static_cast<std::ptrdiff_t>(count / 2);
@@ -137,6 +137,23 @@ void KdTreeNearestNeighbors::split_leaf(std::uint32_t leaf) {
   build(leaf, ids.begin(), ids.end());
 }
 
+// A point is measured only when its lower bounds are below the current bound: the translation
+// term alone (no square root), then with the rotation term's chord bound (no atan2).
+template <class Visit>
+void KdTreeNearestNeighbors::scan_leaf(const Node& leaf, const Config& q, Visit& visit) const {
+  const double wt = space_.weights().translation;
+  const double wr = space_.weights().rotation;
+  for (const Entry& e : leaf.bucket) {
+    const double bound = visit.bound();
+    const double dt2 = (q.t - e.t).squaredNorm();
+    if (wt * wt * dt2 >= bound * bound)
+      continue;
+    if (wt * std::sqrt(dt2) + wr * SE3Space::rotation_lower_bound(q.q, e.q) >= bound)
+      continue;
+    visit.consider(e.id, space_.distance(q, Config{e.t, e.q}));
+  }
+}
+
 // Depth-first, the child whose box is nearer first; a child is skipped when the weighted distance
 // to its box reaches the current bound.
 template <class Visit>
@@ -144,13 +161,7 @@ void KdTreeNearestNeighbors::search(std::uint32_t n, const Config& q, Visit& vis
   const Node& node = nodes_[n];
   const double wt2 = space_.weights().translation * space_.weights().translation;
   if (node.axis < 0) {
-    // The translation term alone often exceeds the bound: skip the rotation term (an atan2) then.
-    for (const Entry& e : node.bucket) {
-      const double bound = visit.bound();
-      if (wt2 * (q.t - e.t).squaredNorm() >= bound * bound)
-        continue;
-      visit.consider(e.id, space_.distance(q, points_[e.id]));
-    }
+    scan_leaf(node, q, visit);
     return;
   }
   const double dl = wt2 * nodes_[node.left].box_distance2(q.t);

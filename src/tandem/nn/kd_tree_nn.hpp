@@ -6,7 +6,11 @@
 // it. The lower bound used for pruning is the weighted Euclidean distance from the query's
 // translation to that box, which never exceeds the metric w_t |dt| + w_r angle (the rotation term
 // is >= 0), so the search is exact for any rotation weight; tight boxes (rather than cells) keep it
-// fast when the tree is clustered and the query far away, as RRT queries often are.
+// fast when the tree is clustered and the query far away, as RRT queries often are. In a leaf, a
+// point is measured exactly (an atan2) only when a cheap lower bound of its distance is below the
+// current bound: w_t |dt| first, then w_t |dt| + w_r 2 |a - b| (SE3Space::rotation_lower_bound),
+// which is within 10% of the rotation term at any angle. A point skipped is strictly farther than
+// the bound, so the search returns what it would without the bound, the same node on ties.
 //
 // Points are inserted one at a time (RRT trees grow this way); a leaf splits at the median of its
 // widest translation axis when it holds more than kBucketSize points. RRT-Connect adds long runs of
@@ -34,9 +38,11 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   /// A child may hold at most this share of its parent's points before the subtree is rebuilt.
   static constexpr double kAlpha = 0.75;
 
-  /// A point in a leaf, with its translation inline so that a leaf scan reads contiguous memory.
+  /// A point in a leaf, with its translation and rotation inline so that a leaf scan reads
+  /// contiguous memory.
   struct Entry {
     Eigen::Vector3d t;
+    Eigen::Quaterniond q;
     NodeId id;
   };
 
@@ -62,6 +68,8 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   void collect(std::uint32_t node, std::vector<NodeId>& ids);
   void build(std::uint32_t node, std::vector<NodeId>::iterator first,
              std::vector<NodeId>::iterator last);
+  template <class Visit>
+  void scan_leaf(const Node& leaf, const Config& q, Visit& visit) const;
   template <class Visit>
   void search(std::uint32_t node, const Config& q, Visit& visit) const;
 

@@ -49,6 +49,15 @@ class SE3Space {
   /// Rotation angle in radians, in [0, pi], between two unit quaternions; q and -q give 0.
   static double rotation_angle(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 
+  /// A lower bound of rotation_angle(a, b) without its atan2, within 10% of it at any angle: twice
+  /// the chord |a - b| between the quaternions on one hemisphere (see rotation_angle).
+  static double rotation_lower_bound(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+    const Eigen::Vector4d va = a.coeffs();
+    const Eigen::Vector4d vb = b.coeffs();
+    const double chord = va.dot(vb) < 0.0 ? (va + vb).norm() : (va - vb).norm();
+    return kChordBound * chord;
+  }
+
   double distance(const Config& a, const Config& b) const {
     return weights_.translation * (a.t - b.t).norm() + weights_.rotation * rotation_angle(a.q, b.q);
   }
@@ -90,6 +99,9 @@ class SE3Space {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
+  /// For unit quaternions the chord is 2 sin(theta / 4) <= theta / 2. The factor stays below 2 by
+  /// enough to absorb rounding and quaternions normalised to within 1e-6.
+  static constexpr double kChordBound = 2.0 * (1.0 - 1e-6);
 
   SpaceKind kind_;
   Bounds bounds_;
