@@ -16,6 +16,35 @@ KdTreeNearestNeighbors::KdTreeNearestNeighbors(const SE3Space& space,
   clear();
 }
 
+KdTreeNearestNeighbors::Key KdTreeNearestNeighbors::key(const Config& c) const {
+  Key k;
+  k.head<3>() = c.t;
+  k.tail<4>() = c.q.w() < 0.0 ? Eigen::Vector4d(-c.q.coeffs()) : Eigen::Vector4d(c.q.coeffs());
+  return k;
+}
+
+KdTreeNearestNeighbors::Key KdTreeNearestNeighbors::axis_weights() const {
+  Key w;
+  w.head<3>().setConstant(space_.weights().translation);
+  w.tail<4>().setConstant(kChordWeight * space_.weights().rotation);
+  return w;
+}
+
+double KdTreeNearestNeighbors::box_bound(const Query& query, const Key& lo, const Key& hi) const {
+  const Key& k = query.key;
+  const double dt =
+      (lo.head<3>() - k.head<3>()).cwiseMax(k.head<3>() - hi.head<3>()).cwiseMax(0.0).norm();
+  const auto to_box = [&](const Eigen::Vector4d& v) {
+    return (lo.tail<4>() - v).cwiseMax(v - hi.tail<4>()).cwiseMax(0.0).norm();
+  };
+  const double chord = std::min(to_box(k.tail<4>()), to_box(query.minus_q));
+  return space_.weights().translation * dt + space_.weights().rotation * kChordWeight * chord;
+}
+
+double KdTreeNearestNeighbors::point_bound(const Query& query, const Key& key) const {
+  return box_bound(query, key, key);
+}
+
 void KdTreeNearestNeighbors::clear() {
   nodes_.assign(1, Node{});
   free_.clear();
@@ -34,20 +63,20 @@ std::uint32_t KdTreeNearestNeighbors::new_node() {
 }
 
 void KdTreeNearestNeighbors::add(NodeId id) {
-  const Eigen::Vector3d& t = points_[id].t;
+  const Key k = key(points_[id]);
   path_.clear();
   std::uint32_t n = 0;
   for (;;) {
     path_.push_back(n);
     Node& node = nodes_[n];
     ++node.count;
-    node.lo = node.lo.cwiseMin(t);
-    node.hi = node.hi.cwiseMax(t);
+    node.lo = node.lo.cwiseMin(k);
+    node.hi = node.hi.cwiseMax(k);
     if (node.axis < 0)
       break;
-    n = t[node.axis] < node.split ? node.left : node.right;
+    n = k[node.axis] < node.split ? node.left : node.right;
   }
-  nodes_[n].bucket.push_back({t, points_[id].q, id});
+  nodes_[n].bucket.push_back({k, id});
   ++size_;
   if (nodes_[n].bucket.size() > kBucketSize)
     split_leaf(n);
@@ -91,33 +120,35 @@ void KdTreeNearestNeighbors::rebuild(std::uint32_t root) {
 void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iterator first,
                                    std::vector<NodeId>::iterator last) {
   const auto count = static_cast<std::size_t>(last - first);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
+  Key lo = Key::Constant(std::numeric_limits<double>::infinity());
+  Key hi = -lo;
   for (auto it = first; it != last; ++it) {
-    lo = lo.cwiseMin(points_[*it].t);
-    hi = hi.cwiseMax(points_[*it].t);
+    const Key k = key(points_[*it]);
+    lo = lo.cwiseMin(k);
+    hi = hi.cwiseMax(k);
   }
   nodes_[node].count = static_cast<std::uint32_t>(count);
   nodes_[node].lo = lo;
   nodes_[node].hi = hi;
   int axis = 0;
-  (hi - lo).maxCoeff(&axis);
+  (hi - lo).cwiseProduct(axis_weights()).maxCoeff(&axis);
   if (count <= kBucketSize || !(hi[axis] > lo[axis])) {
     // A leaf (also when all points share one position: it then just grows).
     nodes_[node].axis = -1;
     nodes_[node].bucket.clear();
     for (auto it = first; it != last; ++it)
-      nodes_[node].bucket.push_back({points_[*it].t, points_[*it].q, *it});
+      nodes_[node].bucket.push_back({key(points_[*it]), *it});
     return;
   }
   auto mid = first + static_cast<std::ptrdiff_t>(count / 2);
+  const auto coordinate = [&](NodeId id) { return key(points_[id])[axis]; };
   std::nth_element(first, mid, last,
-                   [&](NodeId a, NodeId b) { return points_[a].t[axis] < points_[b].t[axis]; });
-  double split = points_[*mid].t[axis];
+                   [&](NodeId a, NodeId b) { return coordinate(a) < coordinate(b); });
+  double split = coordinate(*mid);
   if (split <= lo[axis])
     split = std::nextafter(lo[axis], hi[axis]);
   // Points at the split value go right; both sides are non-empty since lo < split <= hi.
-  mid = std::partition(first, last, [&](NodeId a) { return points_[a].t[axis] < split; });
+  mid = std::partition(first, last, [&](NodeId a) { return coordinate(a) < split; });
   const std::uint32_t l = new_node();
   const std::uint32_t r = new_node();
   nodes_[node].axis = axis;
@@ -137,46 +168,39 @@ void KdTreeNearestNeighbors::split_leaf(std::uint32_t leaf) {
   build(leaf, ids.begin(), ids.end());
 }
 
-// A point is measured only when its lower bounds are below the current bound: the translation
-// term alone (no square root), then with the rotation term's chord bound (no atan2).
+// A point is measured only when its lower bound does not exceed the current best.
 template <class Visit>
-void KdTreeNearestNeighbors::scan_leaf(const Node& leaf, const Config& q, Visit& visit) const {
-  const double wt = space_.weights().translation;
-  const double wr = space_.weights().rotation;
+void KdTreeNearestNeighbors::scan_leaf(const Node& leaf, const Query& query, Visit& visit) const {
   for (const Entry& e : leaf.bucket) {
-    const double bound = visit.bound();
-    const double dt2 = (q.t - e.t).squaredNorm();
-    if (wt * wt * dt2 >= bound * bound)
+    if (point_bound(query, e.key) > visit.bound())
       continue;
-    if (wt * std::sqrt(dt2) + wr * SE3Space::rotation_lower_bound(q.q, e.q) >= bound)
-      continue;
-    visit.consider(e.id, space_.distance(q, Config{e.t, e.q}));
+    visit.consider(e.id, space_.distance(query.q, points_[e.id]));
   }
 }
 
-// Depth-first, the child whose box is nearer first; a child is skipped when the weighted distance
-// to its box reaches the current bound.
+// Depth-first, the child with the smaller bound first; a child is skipped when its bound exceeds
+// the current best (equal may still hold a smaller id).
 template <class Visit>
-void KdTreeNearestNeighbors::search(std::uint32_t n, const Config& q, Visit& visit) const {
+void KdTreeNearestNeighbors::search(std::uint32_t n, const Query& query, Visit& visit) const {
   const Node& node = nodes_[n];
-  const double wt2 = space_.weights().translation * space_.weights().translation;
   if (node.axis < 0) {
-    scan_leaf(node, q, visit);
+    scan_leaf(node, query, visit);
     return;
   }
-  const double dl = wt2 * nodes_[node.left].box_distance2(q.t);
-  const double dr = wt2 * nodes_[node.right].box_distance2(q.t);
+  const Node& l = nodes_[node.left];
+  const Node& r = nodes_[node.right];
+  const double dl = box_bound(query, l.lo, l.hi);
+  const double dr = box_bound(query, r.lo, r.hi);
   const bool left_first = dl <= dr;
-  const std::uint32_t first = left_first ? node.left : node.right;
-  const std::uint32_t second = left_first ? node.right : node.left;
-  const double d_first = left_first ? dl : dr;
-  const double d_second = left_first ? dr : dl;
-  double bound = visit.bound();
-  if (d_first < bound * bound)
-    search(first, q, visit);
-  bound = visit.bound();
-  if (d_second < bound * bound)
-    search(second, q, visit);
+  if ((left_first ? dl : dr) <= visit.bound())
+    search(left_first ? node.left : node.right, query, visit);
+  if ((left_first ? dr : dl) <= visit.bound())
+    search(left_first ? node.right : node.left, query, visit);
+}
+
+KdTreeNearestNeighbors::Query KdTreeNearestNeighbors::query(const Config& q) const {
+  const Key k = key(q);
+  return Query{q, k, -k.tail<4>()};
 }
 
 NodeId KdTreeNearestNeighbors::nearest(const Config& q) const {
@@ -187,13 +211,13 @@ NodeId KdTreeNearestNeighbors::nearest(const Config& q) const {
     NodeId id = 0;
     double bound() const { return d; }
     void consider(NodeId i, double di) {
-      if (di < d) {
+      if (di < d || (di == d && i < id)) {
         d = di;
         id = i;
       }
     }
   } best;
-  search(0, q, best);
+  search(0, query(q), best);
   return best.id;
 }
 
@@ -211,13 +235,13 @@ void KdTreeNearestNeighbors::k_nearest(const Config& q, std::size_t k,
     void consider(NodeId i, double di) {
       if (heap.size() < k) {
         heap.emplace(di, i);
-      } else if (di < heap.top().first) {
+      } else if (std::pair(di, i) < heap.top()) {
         heap.pop();
         heap.emplace(di, i);
       }
     }
   } best{k, {}};
-  search(0, q, best);
+  search(0, query(q), best);
   out.resize(best.heap.size());
   for (std::size_t i = out.size(); i-- > 0;) {
     out[i] = best.heap.top().second;

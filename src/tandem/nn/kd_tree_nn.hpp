@@ -1,22 +1,29 @@
 #pragma once
-// A dynamic, bucketed k-d tree over the translation of configurations, searched exactly under the
-// full SE(3) metric.
+// A dynamic, bucketed k-d tree over the seven numbers of a configuration (translation and
+// quaternion), searched exactly under the full SE(3) metric.
 //
-// Nodes split on translation coordinates only, and each keeps the bounding box of the points below
-// it. The lower bound used for pruning is the weighted Euclidean distance from the query's
-// translation to that box, which never exceeds the metric w_t |dt| + w_r angle (the rotation term
-// is >= 0), so the search is exact for any rotation weight; tight boxes (rather than cells) keep it
-// fast when the tree is clustered and the query far away, as RRT queries often are. In a leaf, a
-// point is measured exactly (an atan2) only when a cheap lower bound of its distance is below the
-// current bound: w_t |dt| first, then w_t |dt| + w_r 2 |a - b| (SE3Space::rotation_lower_bound),
-// which is within 10% of the rotation term at any angle. A point skipped is strictly farther than
-// the bound, so the search returns what it would without the bound, the same node on ties.
+// Each point is keyed by its translation and its quaternion's coefficients, the quaternion taken
+// on the hemisphere w >= 0 (q and -q are one rotation). Nodes split on any of the seven keys, the
+// widest under the metric's weights, and each keeps the bounding box of the keys below it. The
+// lower bound used for pruning a box is
+//   w_t |dt| + w_r 2 min(|q - box|, |-q - box|)
+// with dt the query's translation to the box and |q - box| the distance of the query's quaternion
+// to the box in R^4: the chord |q - p| to a unit quaternion p is 2 sin(theta / 4) for a rotation
+// of theta, so twice it never exceeds theta (SE3Space::rotation_lower_bound), and it is within
+// 10% of it. Tight boxes (rather than cells) keep the search fast when the tree is clustered and
+// the query far away, as RRT queries often are. In a leaf, a point is measured exactly (an atan2)
+// only when the same bound for the point itself is below the current best.
+//
+// Ties are broken by the smaller id, as a linear scan in insertion order does, so the answer does
+// not depend on the tree's shape; a point is skipped only when its bound exceeds the best.
 //
 // Points are inserted one at a time (RRT trees grow this way); a leaf splits at the median of its
-// widest translation axis when it holds more than kBucketSize points. RRT-Connect adds long runs of
-// points along a line, which would make a plain k-d tree a list; the tree stays balanced as a
-// scapegoat tree does: when an insertion lands too deep, the highest unbalanced subtree on its path
-// is rebuilt at medians (amortised O(log n) per insertion).
+// widest key when it holds more than kBucketSize points. RRT-Connect adds long runs of points
+// along a line, which would make a plain k-d tree a list; the tree stays balanced as a scapegoat
+// tree does: when an insertion lands too deep, the highest unbalanced subtree on its path is
+// rebuilt at medians (amortised O(log n) per insertion).
+
+#include <limits>
 
 #include "tandem/nn/nearest_neighbors.hpp"
 
@@ -38,11 +45,12 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   /// A child may hold at most this share of its parent's points before the subtree is rebuilt.
   static constexpr double kAlpha = 0.75;
 
-  /// A point in a leaf, with its translation and rotation inline so that a leaf scan reads
-  /// contiguous memory.
+  /// A point's key: translation, then the quaternion's coefficients (x, y, z, w) with w >= 0.
+  using Key = Eigen::Matrix<double, 7, 1>;
+
+  /// A point in a leaf, with its key inline so that a leaf scan reads contiguous memory.
   struct Entry {
-    Eigen::Vector3d t;
-    Eigen::Quaterniond q;
+    Key key;
     NodeId id;
   };
 
@@ -51,15 +59,27 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
     double split = 0.0;  ///< points with t[axis] < split go left
     std::uint32_t left = 0, right = 0;
     std::uint32_t count = 0;  ///< points in the subtree
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d hi = -Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Key lo = Key::Constant(std::numeric_limits<double>::infinity());
+    Key hi = -Key::Constant(std::numeric_limits<double>::infinity());
     std::vector<Entry> bucket;  ///< leaf only
-
-    /// Squared distance from p to the box of the subtree's points.
-    double box_distance2(const Eigen::Vector3d& p) const {
-      return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).squaredNorm();
-    }
   };
+
+  /// The query as the searches use it: its key and its quaternion's opposite.
+  struct Query {
+    const Config& q;
+    Key key;
+    Eigen::Vector4d minus_q;
+  };
+
+  /// Twice the chord bounds the rotation angle (see SE3Space::rotation_lower_bound).
+  static constexpr double kChordWeight = SE3Space::kChordBound;
+
+  Key key(const Config& c) const;
+  Query query(const Config& q) const;
+  /// Lower bound of the distance from the query to any point whose key is in [lo, hi].
+  double box_bound(const Query& query, const Key& lo, const Key& hi) const;
+  /// Lower bound of the distance from the query to the point with this key.
+  double point_bound(const Query& query, const Key& key) const;
 
   std::uint32_t new_node();
   void split_leaf(std::uint32_t leaf);
@@ -69,9 +89,11 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   void build(std::uint32_t node, std::vector<NodeId>::iterator first,
              std::vector<NodeId>::iterator last);
   template <class Visit>
-  void scan_leaf(const Node& leaf, const Config& q, Visit& visit) const;
+  void scan_leaf(const Node& leaf, const Query& query, Visit& visit) const;
   template <class Visit>
-  void search(std::uint32_t node, const Config& q, Visit& visit) const;
+  void search(std::uint32_t node, const Query& query, Visit& visit) const;
+  /// The key's weight under the metric, for choosing the widest axis to split.
+  Key axis_weights() const;
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> free_;  ///< node slots released by rebuilds

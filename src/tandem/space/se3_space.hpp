@@ -49,6 +49,10 @@ class SE3Space {
   /// Rotation angle in radians, in [0, pi], between two unit quaternions; q and -q give 0.
   static double rotation_angle(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 
+  /// For unit quaternions the chord |a - b| (one hemisphere) is 2 sin(theta / 4) <= theta / 2. The
+  /// factor stays below 2 by enough to absorb rounding and quaternions normalised to within 1e-6.
+  static constexpr double kChordBound = 2.0 * (1.0 - 1e-6);
+
   /// A lower bound of rotation_angle(a, b) without its atan2, within 10% of it at any angle: twice
   /// the chord |a - b| between the quaternions on one hemisphere (see rotation_angle).
   static double rotation_lower_bound(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
@@ -99,9 +103,6 @@ class SE3Space {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
-  /// For unit quaternions the chord is 2 sin(theta / 4) <= theta / 2. The factor stays below 2 by
-  /// enough to absorb rounding and quaternions normalised to within 1e-6.
-  static constexpr double kChordBound = 2.0 * (1.0 - 1e-6);
 
   SpaceKind kind_;
   Bounds bounds_;
