@@ -15,6 +15,7 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
       start_steps_(range_, adaptive_floor(settings)),
       goal_steps_(range_, adaptive_floor(settings)),
       sampler_(std::move(sampler)) {
+  queries_origin_ = queries();
   attach(start_tree_);
   attach(goal_tree_);
   // The computer alone: along the workspace guide for a share `guide`, else uniform samples.
@@ -129,7 +130,7 @@ void RRTConnect::show_new_nodes() {
 
 std::uint64_t RRTConnect::queries() {
   const CollisionCounters& c = validator_.checker().counters();
-  return c.state_checks + c.clearance_queries + c.distance_queries;
+  return c.state_checks + c.clearance_queries + c.distance_queries - queries_origin_;
 }
 
 bool RRTConnect::passage_turn() {

@@ -68,7 +68,8 @@ class RRTConnect final : public Planner {
   /// Whether this iteration turns to the passage islands: after the warm-up, whenever the islands
   /// (making them and aiming at them) have cost less than `passages` of the checker's queries.
   bool passage_turn();
-  /// The checker's queries so far (collision, clearance and distance).
+  /// The checker's queries (collision, clearance and distance) since this planner was made: a
+  /// checker may have served earlier runs (a bench worker's), which must not change this one.
   std::uint64_t queries();
   /// Shows the trees' new nodes to the guided sampler (guided_sampler.hpp, step 3).
   void show_new_nodes();
@@ -89,6 +90,7 @@ class RRTConnect final : public Planner {
   std::vector<Target> targets_;
   /// Null when `passages` is 0 (and for the interactive planners).
   std::unique_ptr<PassageIslands> islands_;
+  std::uint64_t queries_origin_ = 0;    ///< the checker's count when this planner was made
   std::uint64_t island_queries_ = 0;    ///< the checker's queries spent on islands
   bool credits_ = false;                ///< the sampler wants credit (wants_credit())
   std::uint64_t credited_queries_ = 0;  ///< queries() when the sampler was last credited
