@@ -42,7 +42,9 @@ double KdTreeNearestNeighbors::box_bound(const Query& query, const Key& lo, cons
 }
 
 double KdTreeNearestNeighbors::point_bound(const Query& query, const Key& key) const {
-  return box_bound(query, key, key);
+  const Eigen::Map<const Eigen::Quaterniond> q(key.tail<4>().data());
+  return space_.weights().translation * (query.key.head<3>() - key.head<3>()).norm() +
+         space_.weights().rotation * SE3Space::rotation_lower_bound(query.q.q, q);
 }
 
 void KdTreeNearestNeighbors::clear() {
@@ -96,36 +98,34 @@ void KdTreeNearestNeighbors::add(NodeId id) {
   }
 }
 
-void KdTreeNearestNeighbors::collect(std::uint32_t node, std::vector<NodeId>& ids) {
+void KdTreeNearestNeighbors::collect(std::uint32_t node, std::vector<Entry>& entries) {
   Node& n = nodes_[node];
   if (n.axis < 0) {
-    for (const Entry& e : n.bucket)
-      ids.push_back(e.id);
+    entries.insert(entries.end(), n.bucket.begin(), n.bucket.end());
     return;
   }
-  collect(n.left, ids);
-  collect(n.right, ids);
+  collect(n.left, entries);
+  collect(n.right, entries);
   free_.push_back(n.left);
   free_.push_back(n.right);
 }
 
 void KdTreeNearestNeighbors::rebuild(std::uint32_t root) {
-  std::vector<NodeId> ids;
-  ids.reserve(nodes_[root].count);
-  collect(root, ids);
+  std::vector<Entry> entries;
+  entries.reserve(nodes_[root].count);
+  collect(root, entries);
   nodes_[root] = Node{};
-  build(root, ids.begin(), ids.end());
+  build(root, entries.begin(), entries.end());
 }
 
-void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iterator first,
-                                   std::vector<NodeId>::iterator last) {
+void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<Entry>::iterator first,
+                                   std::vector<Entry>::iterator last) {
   const auto count = static_cast<std::size_t>(last - first);
   Key lo = Key::Constant(std::numeric_limits<double>::infinity());
   Key hi = -lo;
   for (auto it = first; it != last; ++it) {
-    const Key k = key(points_[*it]);
-    lo = lo.cwiseMin(k);
-    hi = hi.cwiseMax(k);
+    lo = lo.cwiseMin(it->key);
+    hi = hi.cwiseMax(it->key);
   }
   nodes_[node].count = static_cast<std::uint32_t>(count);
   nodes_[node].lo = lo;
@@ -133,22 +133,19 @@ void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iter
   int axis = 0;
   (hi - lo).cwiseProduct(axis_weights()).maxCoeff(&axis);
   if (count <= kBucketSize || !(hi[axis] > lo[axis])) {
-    // A leaf (also when all points share one position: it then just grows).
+    // A leaf (also when all points share one key: it then just grows).
     nodes_[node].axis = -1;
-    nodes_[node].bucket.clear();
-    for (auto it = first; it != last; ++it)
-      nodes_[node].bucket.push_back({key(points_[*it]), *it});
+    nodes_[node].bucket.assign(first, last);
     return;
   }
   auto mid = first + static_cast<std::ptrdiff_t>(count / 2);
-  const auto coordinate = [&](NodeId id) { return key(points_[id])[axis]; };
   std::nth_element(first, mid, last,
-                   [&](NodeId a, NodeId b) { return coordinate(a) < coordinate(b); });
-  double split = coordinate(*mid);
+                   [&](const Entry& a, const Entry& b) { return a.key[axis] < b.key[axis]; });
+  double split = mid->key[axis];
   if (split <= lo[axis])
     split = std::nextafter(lo[axis], hi[axis]);
   // Points at the split value go right; both sides are non-empty since lo < split <= hi.
-  mid = std::partition(first, last, [&](NodeId a) { return coordinate(a) < split; });
+  mid = std::partition(first, last, [&](const Entry& e) { return e.key[axis] < split; });
   const std::uint32_t l = new_node();
   const std::uint32_t r = new_node();
   nodes_[node].axis = axis;
@@ -162,10 +159,9 @@ void KdTreeNearestNeighbors::build(std::uint32_t node, std::vector<NodeId>::iter
 }
 
 void KdTreeNearestNeighbors::split_leaf(std::uint32_t leaf) {
-  std::vector<NodeId> ids;
-  for (const Entry& e : nodes_[leaf].bucket)
-    ids.push_back(e.id);
-  build(leaf, ids.begin(), ids.end());
+  std::vector<Entry> entries = std::move(nodes_[leaf].bucket);
+  nodes_[leaf].bucket = {};
+  build(leaf, entries.begin(), entries.end());
 }
 
 // A point is measured only when its lower bound does not exceed the current best.

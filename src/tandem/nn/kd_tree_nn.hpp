@@ -56,7 +56,7 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
 
   struct Node {
     int axis = -1;       ///< -1 for a leaf
-    double split = 0.0;  ///< points with t[axis] < split go left
+    double split = 0.0;  ///< points with key[axis] < split go left
     std::uint32_t left = 0, right = 0;
     std::uint32_t count = 0;  ///< points in the subtree
     Key lo = Key::Constant(std::numeric_limits<double>::infinity());
@@ -78,16 +78,18 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   Query query(const Config& q) const;
   /// Lower bound of the distance from the query to any point whose key is in [lo, hi].
   double box_bound(const Query& query, const Key& lo, const Key& hi) const;
-  /// Lower bound of the distance from the query to the point with this key.
+  /// Lower bound of the distance from the query to the point with this key, SE3Space's bound of
+  /// the rotation term (the box bound of a one-point box, but cheaper).
   double point_bound(const Query& query, const Key& key) const;
 
   std::uint32_t new_node();
   void split_leaf(std::uint32_t leaf);
   /// Rebuilds the subtree at `root` balanced, reusing its node slots.
   void rebuild(std::uint32_t root);
-  void collect(std::uint32_t node, std::vector<NodeId>& ids);
-  void build(std::uint32_t node, std::vector<NodeId>::iterator first,
-             std::vector<NodeId>::iterator last);
+  /// Copies the entries below `node` to `entries` and releases its descendants' slots.
+  void collect(std::uint32_t node, std::vector<Entry>& entries);
+  void build(std::uint32_t node, std::vector<Entry>::iterator first,
+             std::vector<Entry>::iterator last);
   template <class Visit>
   void scan_leaf(const Node& leaf, const Query& query, Visit& visit) const;
   template <class Visit>
