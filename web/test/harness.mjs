@@ -1,6 +1,6 @@
 // Starts tandem with its viewer and a headless Debian Chromium (playwright-core) for the tests and
 // the benchmark. The tandem binary: $TANDEM_BIN, else ../build/apps/tandem/tandem.
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { mkdtempSync, existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -99,6 +99,16 @@ export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
  * A recorded operator (seconds) that swings the part to and fro near environment 2's start, in free
  * space: each new pose is a target the tree can reach (for measuring the share of operator nodes).
  */
+/** Environment 2 with the tube's mouth closed: no path, so the trees grow for as long as a test
+ * watches them (the open scene is solved within seconds at some settings). */
+export function writeClosedScene(dir) {
+  const scene = execFileSync(tandemBin, ['scenes', 'cluttered-2'], { encoding: 'utf8' });
+  const plug = '\n[[obstacle]]\nname = "plug"\nbox = [0.05, 0.8, 0.4]\nposition = [-0.025, 0.0, 1.0]\n';
+  const file = path.join(dir, 'cluttered-2-closed.toml');
+  writeFileSync(file, scene + plug);
+  return file;
+}
+
 export function writeSwingTrace(dir, seconds = 120) {
   const s = Math.sin(Math.PI / 18), c = Math.cos(Math.PI / 18);
   const lines = ['# tandem operator trace 1', '# clock: seconds', '# t x y z qx qy qz qw buttons'];

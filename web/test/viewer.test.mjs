@@ -14,7 +14,7 @@ import http from 'node:http';
 import path from 'node:path';
 import {
   startTandem, stopTandem, launchBrowser, openViewer, artefactPath, scratch, sleep, tandemBin,
-  writeSwingTrace,
+  writeSwingTrace, writeClosedScene,
 } from './harness.mjs';
 
 let browser;
@@ -398,12 +398,20 @@ test('the keyboard, a gamepad and a WebHID SpaceMouse move the part', { timeout:
   }
 });
 
+// Over `ms` of the run: the operator's share of the iterations (what α sets: 1 − α of them) and of
+// the nodes added (fewer than that, as an operator target near the tree adds little).
 async function operatorShare(page, ms) {
-  const a = await counts(page);
+  const status = () => page.evaluate(() => window.tandem.status);
+  const [a, sa] = [await counts(page), await status()];
   await sleep(ms);
-  const b = await counts(page);
+  const [b, sb] = [await counts(page), await status()];
   const added = b.nodes - a.nodes;
-  return { added, share: (b.bySource[2] - a.bySource[2]) / Math.max(added, 1) };
+  const iterations = sb.iterations - sa.iterations;
+  return {
+    added, iterations,
+    share: (b.bySource[2] - a.bySource[2]) / Math.max(added, 1),
+    turns: (sb.operator_iterations - sa.operator_iterations) / Math.max(iterations, 1),
+  };
 }
 
 async function setAlpha(page, value) {
@@ -412,8 +420,8 @@ async function setAlpha(page, value) {
   await waitFor(page, (v) => Math.abs(window.tandem.status.settings.alpha - v) < 1e-9, value);
 }
 
-test('changing α in the viewer changes the share of operator nodes', { timeout: 90000 }, async () => {
-  const run = await startTandem(live('alpha', ['cluttered-2', '--mode', 'interactive', '--alpha', '0.5',
+test('changing α in the viewer changes the operator\'s share of the iterations and of the nodes', { timeout: 90000 }, async () => {
+  const run = await startTandem(live('alpha', [writeClosedScene(dir), '--mode', 'interactive', '--alpha', '0.5',
     '--operator', `trace:${writeSwingTrace(dir)}`]));
   try {
     const page = await openViewer(browser, run);
@@ -422,8 +430,16 @@ test('changing α in the viewer changes the share of operator nodes', { timeout:
     await setAlpha(page, 0.1);
     const operator = await operatorShare(page, 4000);
     assert.ok(computer.added > 50 && operator.added > 50, `nodes were added (${computer.added}, ${operator.added})`);
-    assert.ok(operator.share > computer.share + 0.2,
-      `operator nodes: ${(100 * computer.share).toFixed(0)}% at α 0.9, ${(100 * operator.share).toFixed(0)}% at α 0.1`);
+    assert.ok(computer.iterations > 1000 && operator.iterations > 1000,
+      `iterations ran (${computer.iterations}, ${operator.iterations})`);
+    // Thousands of draws: the operator's share of the iterations is 1 − α to within a few points.
+    const pct = (x) => `${(100 * x).toFixed(1)}%`;
+    assert.ok(Math.abs(computer.turns - 0.1) < 0.05, `operator iterations at α 0.9: ${pct(computer.turns)}`);
+    assert.ok(Math.abs(operator.turns - 0.9) < 0.05, `operator iterations at α 0.1: ${pct(operator.turns)}`);
+    // The nodes follow, less sharply: an operator target near the tree adds little (measured: 16-27%
+    // of the nodes at α 0.9, 42-55% at α 0.1, five runs).
+    assert.ok(operator.share > computer.share + 0.1,
+      `operator nodes: ${pct(computer.share)} at α 0.9, ${pct(operator.share)} at α 0.1`);
   } finally {
     await stopTandem(run);
   }
