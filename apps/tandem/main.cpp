@@ -38,6 +38,8 @@ int run(int argc, char** argv) {
       tandem::cli::add_check_path_command);
   add("scenes", "List the built-in scenes, or print one's scenario file",
       tandem::cli::add_scenes_command);
+  add("parts", "List the assembly tree of a STEP or IGES file: names, sizes, colours",
+      tandem::cli::add_parts_command);
   add("render", "Draw a problem and optionally a path as an SVG picture",
       tandem::cli::add_render_command);
   add("bench", "Run an experiment (sweeps x seeds): runs, OMPL benchmark log, report",

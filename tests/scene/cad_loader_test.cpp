@@ -75,13 +75,13 @@ TEST_F(CadLoaderTest, ConvertsMillimetresToMetresInPlacementsAndTriangles) {
   expect_near(lo, {-0.05, -0.04, 0.0}, tol);
   expect_near(hi, {0.05, 0.04, 0.04}, tol);
   std::tie(lo, hi) = world_box(node(*housing_, "housing/lid-1/lid"));
-  expect_near(lo, {-0.05, -0.04, 0.06}, tol);
-  expect_near(hi, {0.05, 0.04, 0.07}, tol);
+  expect_near(lo, {-0.05, -0.04, 0.08}, tol);
+  expect_near(hi, {0.05, 0.04, 0.09}, tol);
   const CadNode& peg = node(*housing_, "housing/peg");
-  expect_near(peg.placement.translation(), {0, 0, 0.01}, 1e-12);
+  expect_near(peg.placement.translation(), {0, 0, 0.011}, 1e-12);
   std::tie(lo, hi) = world_box(peg);
-  expect_near(lo, {-0.009, -0.009, 0.01}, tol);
-  expect_near(hi, {0.009, 0.009, 0.04}, tol);
+  expect_near(lo, {-0.009, -0.009, 0.011}, tol);
+  expect_near(hi, {0.009, 0.009, 0.041}, tol);
 }
 
 TEST_F(CadLoaderTest, SharedProductsKeepTheirOwnPlacements) {

@@ -11,6 +11,7 @@
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
 #include "tandem/core/toml_table.hpp"
+#include "tandem/scene/cad_scene.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 #include "tandem/scene/urdf_loader.hpp"
 
@@ -310,6 +311,55 @@ std::vector<Body> read_obstacles(TomlTable& top, const Context& ctx) {
   return obstacles;
 }
 
+/// The [assembly] table: a STEP or IGES file whose parts are obstacles, but the one named `part`,
+/// which is the object (none without an [assembly]).
+std::optional<CadScene> read_assembly(TomlTable& top, const Context& ctx) {
+  if (!top.has("assembly"))
+    return std::nullopt;
+  TomlTable a = top.subtable("assembly");
+  const std::string part = a.optional_string("part").value_or("");
+  CadOptions options;
+  for (auto [key, value] : {std::pair{"linear_deflection", &options.linear_deflection},
+                            std::pair{"angular_deflection", &options.angular_deflection}}) {
+    if (a.has(key))
+      *value = a.positive(key);
+  }
+  CadScene scene = load_referenced(a, ctx, "file", [&](const std::filesystem::path& file) {
+    return cad_scene(load_cad(file, options), part, file.string(), a.where() + ".part");
+  });
+  a.reject_unknown();
+  return scene;
+}
+
+/// The object: the [object] table, or the assembly's part.
+Body read_object(TomlTable& top, const Context& ctx, std::optional<CadScene>& cad) {
+  if (cad && cad->object) {
+    if (top.has("object"))
+      throw InputError(top.at_table(), "the object is given twice: [object] and assembly.part");
+    return *cad->object;
+  }
+  TomlTable object = top.subtable("object");
+  return read_body(object, ctx, UrdfRole::object, "object");
+}
+
+/// The [[obstacle]] tables and the assembly's parts, each with a name of its own.
+std::vector<Body> read_all_obstacles(TomlTable& top, const Context& ctx,
+                                     std::optional<CadScene>& cad) {
+  std::vector<Body> obstacles = read_obstacles(top, ctx);
+  if (!cad)
+    return obstacles;
+  std::set<std::string> names;
+  for (const Body& b : obstacles)
+    names.insert(b.name);
+  for (Body& b : cad->obstacles) {
+    if (!names.insert(b.name).second)
+      throw InputError(top.at_table(), "obstacle name '" + b.name +
+                                           "' is both an [[obstacle]] and a part of the assembly");
+    obstacles.push_back(std::move(b));
+  }
+  return obstacles;
+}
+
 /// The [guide] table's keyframes (none without a [guide]).
 std::vector<Config> read_guide(TomlTable& top, const SE3Space& space) {
   std::vector<Config> guide;
@@ -363,14 +413,17 @@ Problem parse_scenario(std::string_view text, const std::string& source,
   top.optional_string("description");
   const SE3Space space = read_space(top);
 
+  std::optional<CadScene> cad = read_assembly(top, ctx);
   Scene scene;
-  {
-    TomlTable object = top.subtable("object");
-    scene.object = read_body(object, ctx, UrdfRole::object, "object");
+  scene.object = read_object(top, ctx, cad);
+  scene.obstacles = read_all_obstacles(top, ctx, cad);
+  Config start;
+  if (cad && cad->seat && !top.has("start")) {
+    start = *cad->seat;  // the part where it sits in the assembly
+  } else {
+    TomlTable start_t = top.subtable("start");
+    start = read_config(start_t, space);
   }
-  scene.obstacles = read_obstacles(top, ctx);
-  TomlTable start_t = top.subtable("start");
-  const Config start = read_config(start_t, space);
   TomlTable goal_t = top.subtable("goal");
   const Config goal = read_config(goal_t, space);
   std::vector<Config> guide = read_guide(top, space);
