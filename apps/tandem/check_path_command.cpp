@@ -32,12 +32,14 @@ int run_check(const CheckArgs& args) {
   }
   const bool starts =
       problem.space.distance(path.front(), problem.start) < 1e-6 * problem.space.max_extent();
-  const bool ends =
-      problem.space.distance(path.back(), problem.goal) < 1e-6 * problem.space.max_extent();
+  const bool ends = problem.goal_region ? problem.goal_region->contains(path.back())
+                                        : problem.space.distance(path.back(), problem.goal) <
+                                              1e-6 * problem.space.max_extent();
+  const char* goal = problem.goal_region ? "in the goal region" : "at the goal";
   std::cout << args.path_file << ": valid: " << path.size() << " states, " << validator.checks()
             << " configurations checked, length " << path_length(problem.space, path) << "; "
             << (starts ? "starts at the start" : "does not start at the start") << ", "
-            << (ends ? "ends at the goal" : "does not end at the goal") << '\n';
+            << (ends ? "ends " : "does not end ") << goal << '\n';
   return 0;
 }
 

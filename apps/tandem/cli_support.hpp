@@ -15,9 +15,14 @@ namespace tandem::cli {
 struct ProblemArgs {
   std::string problem;
   std::vector<std::string> allowed_dirs;
+  TakeOutOptions take_out;  ///< for a STEP or IGES problem: --part and how to take it out
 };
 
 void add_problem_args(CLI::App& command, ProblemArgs& args);
+/// --linear-deflection and --angular-deflection, in the help's `group`.
+void add_tessellation_args(CLI::App& command, CadOptions& options, const std::string& group);
+/// --part, --margin, --seat-tolerance and the tessellation's deflections.
+void add_take_out_args(CLI::App& command, TakeOutOptions& options);
 Problem load_problem(const ProblemArgs& args);
 
 /// Throws InputError (naming the problem) if the start or the goal is outside the bounds or

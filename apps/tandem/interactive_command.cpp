@@ -119,6 +119,7 @@ LiveOptions live_options(InteractiveArgs& args, const Problem& problem) {
   }
   LiveOptions options;
   options.problem_name = args.run.problem.problem;
+  options.take_out = args.run.problem.take_out;
   options.journal = args.session;
   options.operator_rate_hz = args.operator_rate;
   options.digest_every_s = args.digest_every;

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli_support.hpp"
 #include "commands.hpp"
 #include "tandem/scene/cad_loader.hpp"
 
@@ -74,16 +75,7 @@ Command add_parts_command(CLI::App& app) {
   auto options = std::make_shared<CadOptions>();
   auto json = std::make_shared<bool>(false);
   app.add_option("FILE", *file, "A STEP (.step, .stp) or IGES (.iges, .igs) file")->required();
-  app.add_option("--linear-deflection", options->linear_deflection,
-                 "Tessellation: the largest distance in metres between a face and its triangles "
-                 "(0: 0.1% of the assembly's bounding-box diagonal)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  app.add_option("--angular-deflection", options->angular_deflection,
-                 "Tessellation: the largest angle in radians between neighbouring triangles on a "
-                 "curved face")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_tessellation_args(app, *options, "Options");
   app.add_flag("--json", *json, "Print the tree as JSON");
   return [file, options, json]() -> int {
     const CadAssembly a = load_cad(*file, *options);

@@ -65,6 +65,8 @@ PlannedPath finish_path(const PlanArgs& args, const Problem& problem, const RunS
     out.path = simplify_path(std::move(out.path), validator, rng);
     out.simplify_time_s = watch.seconds();
   }
+  if (problem.goal_region)
+    out.path = cut_at_goal_region(out.path, *problem.goal_region, problem.space);
   out.path = parse_path(format_path(out.path, problem.space), problem.space, "the planned path");
   const PathCheck check = check_path(out.path, validator);
   if (!check.valid)

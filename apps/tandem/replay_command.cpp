@@ -52,6 +52,7 @@ int run_replay(const ReplayArgs& args) {
   const Journal journal = read_journal(args.session);
   ProblemArgs problem_args;
   problem_args.problem = journal.header.problem;
+  problem_args.take_out = journal.header.take_out;
   problem_args.allowed_dirs = args.allowed_dirs;
   const Problem problem = load_problem(problem_args);
   if (journal.digests.empty()) {

@@ -17,11 +17,17 @@ using test::run_tandem;
 using test::TempDir;
 using ::testing::HasSubstr;
 
+struct RunResultLine {
+  int code;
+  std::string text;  ///< stdout and stderr
+};
+
 class CadCliTest : public ::testing::Test {
  protected:
   void SetUp() override { test::write_housing(step_); }
 
-  /// A scenario taking `part` of the housing out to the side, between the block and the lid.
+  /// A scenario taking `part` of the housing out to the side, between the block and the lid. The
+  /// peg's frame is its centre: seated at z = 0.025, out at z = 0.06 (0.045 to 0.075).
   std::filesystem::path scenario(const std::string& part, const std::string& extra = "") {
     return dir_.write("peg-out.toml", R"(name = "peg-out"
 [space]
@@ -32,7 +38,7 @@ file = "housing.step"
 part = ")" + part + R"("
 )" + extra + R"(
 [goal]
-position = [0.1, 0.0, 0.046]
+position = [0.1, 0.0, 0.06]
 )");
   }
 
@@ -61,7 +67,7 @@ TEST_F(CadCliTest, PartsAsJson) {
   ASSERT_EQ(j["nodes"].size(), 6u);
   const auto& peg = j["nodes"][4];
   EXPECT_EQ(peg["path"], "housing/peg");
-  EXPECT_NEAR(peg["position_m"][2].get<double>(), 0.011, 1e-12);
+  EXPECT_NEAR(peg["position_m"][2].get<double>(), 0.01, 1e-12);
   EXPECT_NEAR(peg["size_m"][2].get<double>(), 0.03, 1e-9);
   EXPECT_EQ(peg["color"], "#19b333");  // (0.1, 0.7, 0.2)
 }
@@ -85,16 +91,16 @@ TEST_F(CadCliTest, AScenarioTakesThePartFromTheAssembly) {
   const auto problem = scenario("peg").string();
   // Straight up out of the pocket, then out sideways between the block and the lid: valid.
   const auto out =
-      path_file("out.path", "0 0 0.011 0 0 0 1\n0 0 0.046 0 0 0 1\n0.1 0 0.046 0 0 0 1\n");
+      path_file("out.path", "0 0 0.025 0 0 0 1\n0 0 0.06 0 0 0 1\n0.1 0 0.06 0 0 0 1\n");
   const auto ok = run_tandem({"check-path", problem, out.string()});
   EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
   // Sideways at once: through the block's wall.
-  const auto through = path_file("through.path", "0 0 0.011 0 0 0 1\n0.1 0 0.046 0 0 0 1\n");
+  const auto through = path_file("through.path", "0 0 0.025 0 0 0 1\n0.1 0 0.06 0 0 0 1\n");
   const auto bad = run_tandem({"check-path", problem, through.string()});
   EXPECT_EQ(bad.exit_code, 1) << bad.out << bad.err;
   EXPECT_THAT(bad.out, HasSubstr("the motion from state 0 to state 1 collides"));
   // Up too far: into the lid, a part of a sub-assembly.
-  const auto lid = path_file("lid.path", "0 0 0.011 0 0 0 1\n0 0 0.07 0 0 0 1\n");
+  const auto lid = path_file("lid.path", "0 0 0.025 0 0 0 1\n0 0 0.07 0 0 0 1\n");
   const auto into_lid = run_tandem({"check-path", problem, lid.string()});
   EXPECT_EQ(into_lid.exit_code, 1);
   EXPECT_THAT(into_lid.out, HasSubstr("state 1 is in collision"));
@@ -109,6 +115,59 @@ TEST_F(CadCliTest, ThePlannerTakesThePegOutAndTheWayOutChecksValid) {
   const auto check = run_tandem({"check-path", problem, path});
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
   EXPECT_THAT(check.out, HasSubstr("starts at the start, ends at the goal"));
+}
+
+/// The housing's peg taken out with --part: the checks of a path against that problem.
+RunResultLine check_take_out(const std::filesystem::path& step, const std::filesystem::path& path,
+                             const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"check-path", step.string(), path.string(), "--part", "peg"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto r = run_tandem(args);
+  return {r.exit_code, r.out + r.err};
+}
+
+TEST_F(CadCliTest, TakeThisPartOutPlansFromTheSeatIntoTheGoalRegion) {
+  const auto path = dir_.path() / "out.path";
+  const auto plan =
+      run_tandem({"plan", step_.string(), "--part", "peg", "--seed", "1", "--out", path.string()});
+  ASSERT_EQ(plan.exit_code, 0) << plan.out << plan.err;
+  EXPECT_THAT(plan.out, HasSubstr("take peg out of housing: solved"));
+  const auto check = check_take_out(step_, path);
+  EXPECT_EQ(check.code, 0) << check.text;
+  EXPECT_THAT(check.text, HasSubstr("starts at the start, ends in the goal region"));
+}
+
+TEST_F(CadCliTest, TheSeatToleranceLetsThePartSlideOutButNotIntoANeighbour) {
+  // Seated: touching the pocket's floor. Without a tolerance the start is in collision.
+  const auto none = run_tandem({"plan", step_.string(), "--part", "peg", "--seat-tolerance", "0"});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("the start is in collision with obstacle 'housing/base'"));
+  // With the default (twice the 0.28 mm deflection): up the pocket, or 0.5 mm toward a wall 1 mm
+  // away, is valid; 1 mm into the floor, or 2 mm into a wall, is not.
+  const auto up = path_file("up.path", "0 0 0.025 0 0 0 1\n0 0 0.03 0 0 0 1\n");
+  EXPECT_EQ(check_take_out(step_, up).code, 0) << check_take_out(step_, up).text;
+  const auto slide = path_file("slide.path", "0 0 0.025 0 0 0 1\n0.0005 0 0.025 0 0 0 1\n");
+  EXPECT_EQ(check_take_out(step_, slide).code, 0) << check_take_out(step_, slide).text;
+  const auto down = path_file("down.path", "0 0 0.025 0 0 0 1\n0 0 0.024 0 0 0 1\n");
+  EXPECT_EQ(check_take_out(step_, down).code, 1);
+  const auto wall = path_file("wall.path", "0 0 0.025 0 0 0 1\n0.002 0 0.025 0 0 0 1\n");
+  EXPECT_EQ(check_take_out(step_, wall).code, 1);
+}
+
+TEST_F(CadCliTest, TakeOutOptionsAreCheckedWithOneClearError) {
+  auto r = run_tandem({"plan", step_.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--part: name the part to take out"));
+  r = run_tandem({"plan", step_.string(), "--part", "housing/lid-1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("no part named 'housing/lid-1'"));  // an assembly, not a part
+  r = run_tandem({"plan", "cluttered-1", "--part", "peg"});
+  EXPECT_EQ(r.exit_code, 2);
+  r = run_tandem({"plan", scenario("peg").string(), "--part", "peg"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--part: takes a part out of a STEP or IGES file"));
+  r = run_tandem({"plan", step_.string(), "--part", "peg", "--margin", "-1"});
+  EXPECT_EQ(r.exit_code, 2);
 }
 
 TEST_F(CadCliTest, AScenarioNamingNoSuchPartOrTwoObjectsExitsWithCodeTwo) {

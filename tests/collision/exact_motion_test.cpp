@@ -38,7 +38,8 @@ Problem thin_wall_problem() {
                  at(-0.6, 0),
                  at(0.6, 0),
                  {},
-                 {}};
+                 {},
+                 std::nullopt};
 }
 
 TEST(ExactMotion, CatchesTheThinWallTheDiscreteCheckStepsOver) {
@@ -73,7 +74,8 @@ TEST(ExactMotion, TurningIsBoundedByTheObjectsRadius) {
                   at(0, 0),
                   at(0, 0),
                   {},
-                  {}};
+                  {},
+                  std::nullopt};
   CollisionChecker checker(p.scene);
   EXPECT_NEAR(checker.object_radius(), std::sqrt(0.25 + 2 * 0.025 * 0.025), 1e-12);
   MotionValidator exact(p.space, checker, kExact);

@@ -63,5 +63,44 @@ TEST(Path, SimplifyStraightensAZigzagThroughFreeSpace) {
   EXPECT_NEAR(path_length(f.problem.space, simple), 1.7, 1e-9);
 }
 
+/// The box [-1, 1]^3 and a cube of half-side 0.1 about the object frame's origin.
+GoalRegion unit_box_region() {
+  GoalRegion r;
+  r.min = Eigen::Vector3d::Constant(-1.0);
+  r.max = Eigen::Vector3d::Constant(1.0);
+  for (double x : {-0.1, 0.1})
+    for (double y : {-0.1, 0.1})
+      for (double z : {-0.1, 0.1})
+        r.points.emplace_back(x, y, z);
+  return r;
+}
+
+TEST(GoalRegion, ThePartIsInWhenAllOfItIsOutsideTheBox) {
+  const GoalRegion r = unit_box_region();
+  EXPECT_FALSE(r.contains(at(0, 0, 0)));
+  EXPECT_FALSE(r.contains(at(1.05, 0, 0)));  // its near side is still inside
+  EXPECT_TRUE(r.contains(at(1.15, 0, 0)));
+  EXPECT_TRUE(r.contains(at(0, -1.5, 0.3)));
+  // Turned 45 degrees about z, the cube reaches 0.1 sqrt(2) from its centre along x.
+  EXPECT_FALSE(r.contains(at(1.13, 0, 0, M_PI / 4)));
+  EXPECT_TRUE(r.contains(at(1.15, 0, 0, M_PI / 4)));
+}
+
+TEST(GoalRegion, APathIsCutWhereItFirstEntersTheRegion) {
+  const GoalRegion r = unit_box_region();
+  const SE3Space space(SpaceKind::se3, Bounds{{-5, -5, -5}, {5, 5, 5}});
+  const Path path{at(0, 0, 0), at(0.5, 0, 0), at(3, 0, 0), at(3, 3, 0)};
+  const Path cut = cut_at_goal_region(path, r, space);
+  ASSERT_EQ(cut.size(), 3u);
+  EXPECT_TRUE(r.contains(cut.back()));
+  EXPECT_NEAR(cut.back().t.x(), 1.1, 1e-9);  // the cube's near side just past the box
+  EXPECT_EQ(cut[1].t, path[1].t);
+  // A path that never enters it, or starts in it, is kept whole.
+  const Path inside{at(0, 0, 0), at(0.5, 0.5, 0)};
+  EXPECT_EQ(cut_at_goal_region(inside, r, space).size(), 2u);
+  const Path out{at(2, 0, 0), at(3, 0, 0)};
+  EXPECT_EQ(cut_at_goal_region(out, r, space).size(), 2u);
+}
+
 }  // namespace
 }  // namespace tandem

@@ -80,11 +80,11 @@ class RecordingSampler final : public TargetSampler {
     uniform_.sample(request, out);
   }
   bool wants_credit() const override { return true; }
-  void credit(NodeSource source, double progress, std::uint64_t queries) override {
+  void credit(NodeSource source, double progress, std::uint64_t cost) override {
     EXPECT_EQ(source, NodeSource::random);
     EXPECT_GE(progress, 0.0);
     grown += progress;
-    this->queries += queries;
+    queries += cost;
     ++credits;
   }
   double grown = 0.0;

@@ -78,10 +78,10 @@ TEST_F(CadLoaderTest, ConvertsMillimetresToMetresInPlacementsAndTriangles) {
   expect_near(lo, {-0.05, -0.04, 0.08}, tol);
   expect_near(hi, {0.05, 0.04, 0.09}, tol);
   const CadNode& peg = node(*housing_, "housing/peg");
-  expect_near(peg.placement.translation(), {0, 0, 0.011}, 1e-12);
+  expect_near(peg.placement.translation(), {0, 0, 0.01}, 1e-12);
   std::tie(lo, hi) = world_box(peg);
-  expect_near(lo, {-0.009, -0.009, 0.011}, tol);
-  expect_near(hi, {0.009, 0.009, 0.041}, tol);
+  expect_near(lo, {-0.009, -0.009, 0.01}, tol);
+  expect_near(hi, {0.009, 0.009, 0.04}, tol);
 }
 
 TEST_F(CadLoaderTest, SharedProductsKeepTheirOwnPlacements) {

@@ -30,6 +30,10 @@ TEST(Journal, WritesAndReadsBackEveryRecordExactly) {
   h.settings.interaction.sampling = IrrtSampling::path_cs;
   h.operator_description = "someone";
   h.started = "2026-12-01T00:00:00Z";
+  h.take_out.part = "housing/peg";
+  h.take_out.margin = 0.1 + 0.2;
+  h.take_out.seat_tolerance = 1.0 / 3.0;
+  h.take_out.cad = {1e-5, 0.25};
   OperatorState s;
   s.sequence = 7;
   s.time = 0.1 + 0.2;  // not a short decimal
@@ -50,6 +54,11 @@ TEST(Journal, WritesAndReadsBackEveryRecordExactly) {
   const Journal j = read_journal(file);
   EXPECT_FALSE(j.torn);
   EXPECT_EQ(j.header.problem, "detour");
+  EXPECT_EQ(j.header.take_out.part, "housing/peg");  // and how it was taken out, to the bit
+  EXPECT_EQ(j.header.take_out.margin, h.take_out.margin);
+  EXPECT_EQ(j.header.take_out.seat_tolerance, h.take_out.seat_tolerance);
+  EXPECT_EQ(j.header.take_out.cad.linear_deflection, 1e-5);
+  EXPECT_EQ(j.header.take_out.cad.angular_deflection, 0.25);
   EXPECT_EQ(j.header.settings.seed, 42u);
   EXPECT_EQ(j.header.settings.interaction.alpha, 0.37);
   EXPECT_EQ(j.header.settings.interaction.sampling, IrrtSampling::path_cs);

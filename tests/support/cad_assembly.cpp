@@ -84,7 +84,7 @@ Handle(TDocStd_Document) housing_document() {
   const TDF_Label housing = named(shapes->NewShape(), "housing");
   named(shapes->AddComponent(housing, base, TopLoc_Location()), "base");
   named(shapes->AddComponent(housing, lid_assembly, moved(0, 0, 80)), "lid-1");
-  named(shapes->AddComponent(housing, peg, moved(0, 0, 11)), "peg");
+  named(shapes->AddComponent(housing, peg, moved(0, 0, 10)), "peg");
   gp_Trsf spare;
   spare.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), M_PI / 2);
   spare.SetTranslationPart(gp_Vec(200, 0, 0));

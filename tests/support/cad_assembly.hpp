@@ -8,10 +8,10 @@
 //                      30 pocket cut into its top at the centre; blue on the solid
 //     lid-1            (a sub-assembly, placed 80 mm up: 40 mm above the block)
 //       lid            a 100 x 80 x 10 plate, z in [0, 10]; its top face red, the rest uncoloured
-//     peg              a cylinder, radius 9, height 30, in the pocket (its base 1 mm above the
-//                      pocket's floor, at z = 11, its axis on x = y = 0); green on the solid
+//     peg              a cylinder, radius 9, height 30, seated in the pocket (its base on the
+//                      pocket's floor at z = 10, its axis on x = y = 0); green on the solid
 //     peg-spare        the same product placed at (200, 0, 0), turned 90 degrees about x
-// The peg stands 1 mm clear of the pocket's walls and floor: it comes out straight up, then
+// The peg rests on the pocket's floor, 1 mm clear of its walls: it comes out straight up, then
 // sideways between the block and the lid.
 
 #include <filesystem>

@@ -31,8 +31,9 @@ Problem FloorScene::make() {
   start.t = {-2, 0, 1};
   goal.t = {1, 0, 1};
   return Problem{
-      "floor", "test", std::move(s), SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
-      start,   goal,   {},           {}};
+      "floor",     "test", std::move(s), SE3Space(SpaceKind::se3, Bounds{{-3, -3, 0}, {1.8, 3, 2}}),
+      start,       goal,   {},           {},
+      std::nullopt};
 }
 
 const SE3Space& room_space() {

@@ -50,7 +50,8 @@ Problem wall_with_gap_problem() {
                  start,
                  goal,
                  {},
-                 {}};
+                 {},
+                 std::nullopt};
 }
 
 TempDir::TempDir() {

@@ -446,7 +446,8 @@ test('changing α in the viewer changes the operator\'s share of the iterations 
 });
 
 test('automatic α: the viewer shows α moving; unticking it, or setting α by hand, pins α', { timeout: 90000 }, async () => {
-  const run = await startTandem(live('auto-alpha', ['cluttered-2', '--mode', 'interactive-contact',
+  // The closed scene: a solution would stop the planner, and α with it, mid-test.
+  const run = await startTandem(live('auto-alpha', [writeClosedScene(dir), '--mode', 'interactive-contact',
     '--auto-alpha', 'true']));
   try {
     const page = await openViewer(browser, run);

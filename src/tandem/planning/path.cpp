@@ -130,4 +130,22 @@ Path simplify_path(Path path, MotionValidator& validator, Rng& rng,
   return path;
 }
 
+Path cut_at_goal_region(const Path& path, const GoalRegion& region, const SE3Space& space) {
+  std::size_t first = 0;
+  while (first < path.size() && !region.contains(path[first]))
+    ++first;
+  if (first == path.size() || first == 0)
+    return path;
+  Path cut(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(first));
+  const Config& a = path[first - 1];
+  const Config& b = path[first];
+  double outside = 0.0, inside = 1.0;
+  for (int k = 0; k < 40; ++k) {
+    const double mid = (outside + inside) / 2.0;
+    (region.contains(space.interpolate(a, b, mid)) ? inside : outside) = mid;
+  }
+  cut.push_back(space.interpolate(a, b, inside));
+  return cut;
+}
+
 }  // namespace tandem

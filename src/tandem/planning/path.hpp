@@ -7,6 +7,7 @@
 
 #include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/rng.hpp"
+#include "tandem/scene/goal_region.hpp"
 
 namespace tandem {
 
@@ -42,5 +43,11 @@ struct SimplifyOptions {
 /// motion is validated; the result is valid and never longer. Deterministic for a given rng state.
 Path simplify_path(Path path, MotionValidator& validator, Rng& rng,
                    const SimplifyOptions& options = {});
+
+/// The path up to where it first enters the goal region: the states before the first state in
+/// the region, then the point where the motion into that state enters the region (to 2^-40 of
+/// the motion, by bisection; a point of a valid motion, so the path stays valid). A path that
+/// never enters the region is returned whole.
+Path cut_at_goal_region(const Path& path, const GoalRegion& region, const SE3Space& space);
 
 }  // namespace tandem

@@ -280,7 +280,8 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
                   start,
                   goal,
                   {},
-                  {}};
+                  {},
+                  std::nullopt};
   read_benchmark_hints(ini, name, problem.hints);
   read_planner_ranges(ini, name, problem.hints);
   return problem;

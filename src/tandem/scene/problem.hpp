@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tandem/core/parameter.hpp"
+#include "tandem/scene/goal_region.hpp"
 #include "tandem/scene/scene.hpp"
 #include "tandem/space/se3_space.hpp"
 
@@ -41,6 +42,9 @@ struct Problem {
   /// A simulated operator's guide: a few keyframes placed by hand, as a person would gesture the
   /// way (coarse; it may pass through obstacles). Empty if the problem has none.
   std::vector<Config> guide;
+  /// "Take this part out": any configuration in the region is a goal; `goal` is one of them, the
+  /// one the planners aim at, and a solution ends where it first enters the region.
+  std::optional<GoalRegion> goal_region;
 };
 
 /// A guide has at most this many keyframes (so that it stays a gesture, not a path).

@@ -18,6 +18,10 @@ Problem load_problem(const std::string& spec, const ProblemLoadOptions& options)
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (is_cad_file(path))
+      return take_out_problem(path, options.take_out);
+    if (!options.take_out.part.empty())
+      throw InputError("--part", "takes a part out of a STEP or IGES file, not of '" + spec + "'");
     if (ext == ".cfg")
       return load_ompl_app_problem(path);
     if (ext == ".toml") {
@@ -27,9 +31,13 @@ Problem load_problem(const std::string& spec, const ProblemLoadOptions& options)
         access.roots.push_back(std::filesystem::absolute(d));
       return load_scenario_file(path, access);
     }
-    throw InputError(spec, "unknown problem format '" + ext +
-                               "' (expected an OMPL.app .cfg or a tandem .toml scenario)");
+    throw InputError(spec,
+                     "unknown problem format '" + ext +
+                         "' (expected an OMPL.app .cfg, a tandem .toml scenario, or a STEP or IGES "
+                         "assembly with --part)");
   }
+  if (!options.take_out.part.empty())
+    throw InputError("--part", "takes a part out of a STEP or IGES file, not of '" + spec + "'");
   for (const auto& scene : builtin_scenes()) {
     if (scene.name == spec)
       return parse_scenario(scene.text, "built-in scene '" + spec + "'", {}, {});

@@ -324,8 +324,17 @@ std::optional<CadScene> read_assembly(TomlTable& top, const Context& ctx) {
     if (a.has(key))
       *value = a.positive(key);
   }
+  std::optional<double> seat;
+  if (a.has("seat_tolerance")) {
+    const toml::node& n = a.require("seat_tolerance");
+    seat = a.number(n, "seat_tolerance");
+    if (*seat < 0.0)
+      a.fail(n, "seat_tolerance", "must not be negative");
+  }
   CadScene scene = load_referenced(a, ctx, "file", [&](const std::filesystem::path& file) {
-    return cad_scene(load_cad(file, options), part, file.string(), a.where() + ".part");
+    const CadAssembly assembly = load_cad(file, options);
+    return cad_scene(assembly, part, file.string(), a.where() + ".part",
+                     seat.value_or(default_seat_tolerance(assembly)));
   });
   a.reject_unknown();
   return scene;
@@ -429,7 +438,8 @@ Problem parse_scenario(std::string_view text, const std::string& source,
   std::vector<Config> guide = read_guide(top, space);
   const ProblemPlannerHints hints = read_planner_hints(top);
   top.reject_unknown();
-  return Problem{name, source, std::move(scene), space, start, goal, hints, std::move(guide)};
+  return Problem{name, source, std::move(scene), space,       start,
+                 goal, hints,  std::move(guide), std::nullopt};
 }
 
 Problem load_scenario_file(const std::filesystem::path& file, const FileAccess& access) {

@@ -119,6 +119,14 @@ JournalWriter::JournalWriter(const std::filesystem::path& file, const JournalHea
          {"settings", settings_json(h.settings)},
          {"operator", h.operator_description},
          {"started", h.started}};
+  if (!h.take_out.part.empty()) {
+    const TakeOutOptions& t = h.take_out;
+    j["take_out"] = {{"part", t.part},
+                     {"margin", t.margin},
+                     {"seat_tolerance", t.seat_tolerance},
+                     {"linear_deflection", t.cad.linear_deflection},
+                     {"angular_deflection", t.cad.angular_deflection}};
+  }
   write_line(j.dump());
 }
 
@@ -196,6 +204,14 @@ void read_header(const json& j, const std::filesystem::path& file, JournalHeader
   h.settings = settings_from_json(j.at("settings"), j.at("seed").get<std::uint64_t>());
   h.operator_description = j.at("operator").get<std::string>();
   h.started = j.at("started").get<std::string>();
+  if (j.contains("take_out")) {
+    const json& t = j.at("take_out");
+    h.take_out.part = t.at("part").get<std::string>();
+    h.take_out.margin = t.at("margin").get<double>();
+    h.take_out.seat_tolerance = t.at("seat_tolerance").get<double>();
+    h.take_out.cad.linear_deflection = t.at("linear_deflection").get<double>();
+    h.take_out.cad.angular_deflection = t.at("angular_deflection").get<double>();
+  }
 }
 
 void read_operator_record(const json& j, const RecordAt& at, Journal& journal) {

@@ -38,6 +38,7 @@
 #include "tandem/interaction/operator_feed.hpp"
 #include "tandem/planning/planner.hpp"
 #include "tandem/scene/problem.hpp"
+#include "tandem/scene/take_out.hpp"
 
 namespace tandem {
 
@@ -46,7 +47,8 @@ namespace tandem {
 std::uint64_t problem_digest(const Problem& problem);
 
 struct JournalHeader {
-  std::string problem;  ///< as given on the command line (a file or a built-in scene's name)
+  std::string problem;      ///< as given on the command line (a file or a built-in scene's name)
+  TakeOutOptions take_out;  ///< for a STEP or IGES problem: the part taken out, and how
   std::string problem_digest;
   std::string mode;  ///< the planner's registry name
   PlannerSettings settings;

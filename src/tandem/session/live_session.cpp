@@ -29,6 +29,7 @@ JournalHeader header_for(const Problem& problem, const RunSpec& spec, const Live
                          const OperatorSource& source) {
   JournalHeader h;
   h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
+  h.take_out = options.take_out;
   h.problem_digest = format_digest(problem_digest(problem));
   h.mode = spec.mode;
   h.settings = spec.settings;

@@ -27,12 +27,14 @@
 #include "tandem/interaction/operator_thread.hpp"
 #include "tandem/operators/operator_switch.hpp"
 #include "tandem/runs/run.hpp"
+#include "tandem/scene/take_out.hpp"
 #include "tandem/session/journal.hpp"
 
 namespace tandem {
 
 struct LiveOptions {
   std::string problem_name;       ///< as the user named it (written in the journal)
+  TakeOutOptions take_out;        ///< and, for a STEP or IGES problem, its --part and options
   std::filesystem::path journal;  ///< where the session is journaled
   double operator_rate_hz = 1000.0;
   double digest_every_s = 2.0;  ///< a tree digest in the journal this often
