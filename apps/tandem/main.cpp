@@ -36,6 +36,9 @@ int run(int argc, char** argv) {
       tandem::cli::add_plan_command);
   add("check-path", "Check every state and motion of a path file against a problem",
       tandem::cli::add_check_path_command);
+  add("clearance",
+      "How close a path's part comes to the obstacles along the whole motion, and to which",
+      tandem::cli::add_clearance_command);
   add("scenes", "List the built-in scenes, or print one's scenario file",
       tandem::cli::add_scenes_command);
   add("parts", "List the assembly tree of a STEP or IGES file: names, sizes, colours",

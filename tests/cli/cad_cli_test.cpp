@@ -170,6 +170,41 @@ TEST_F(CadCliTest, TakeOutOptionsAreCheckedWithOneClearError) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
+TEST_F(CadCliTest, ClearanceAlongAWayOutAsTextJsonAndCsv) {
+  const auto parts = nlohmann::json::parse(run_tandem({"parts", step_.string(), "--json"}).out);
+  const double seat = 2.0 * parts["linear_deflection_m"].get<double>();
+  // Up out of the pocket and out between the block and the lid.
+  const auto path = path_file("out.path",
+                              "0 0 0.025 0 0 0 1\n0 0 0.059 0 0 0 1\n"
+                              "0.1 0 0.059 0 0 0 1\n");
+  const auto csv = (dir_.path() / "c.csv").string();
+  const auto r = run_tandem(
+      {"clearance", step_.string(), "--part", "peg", path.string(), "--json", "--csv", csv});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // Seated, the peg's inset bottom is the seating tolerance above the pocket's floor.
+  EXPECT_NEAR(j["states"][0]["distance"].get<double>(), seat, 1e-9);
+  EXPECT_EQ(j["states"][0]["obstacle"], "housing/base");
+  // Leaving the pocket, the peg is a wall's gap (1 mm, plus the tolerance) from the block.
+  EXPECT_LE(j["segments"][0]["lower"].get<double>(), 0.001 + seat + 1e-9);
+  EXPECT_LE(j["min_clearance"].get<double>(), seat);
+  // Out sideways, its inset bottom 4.56 mm above the block (0.059 - 0.015 + the tolerance - 0.04)
+  // and its top 6.56 mm under the lid.
+  EXPECT_NEAR(j["segments"][1]["lower"].get<double>(), 0.059 - 0.015 + seat - 0.04, 1e-4);
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "kind,from,to,lower,found,at,obstacle");
+  int rows = 0;
+  while (std::getline(in, line))
+    ++rows;
+  EXPECT_EQ(rows, 5);  // three states, two motions
+  const auto text = run_tandem({"clearance", step_.string(), "--part", "peg", path.string()});
+  EXPECT_THAT(text.out, HasSubstr("minimum clearance"));
+  EXPECT_THAT(text.out, HasSubstr("near 'housing/base'"));
+  EXPECT_EQ(run_tandem({"clearance", step_.string(), "--part", "peg", "nope.path"}).exit_code, 2);
+}
+
 TEST_F(CadCliTest, AScenarioNamingNoSuchPartOrTwoObjectsExitsWithCodeTwo) {
   auto r = run_tandem(
       {"check-path", scenario("bolt").string(), path_file("p.path", "0 0 0 0 0 0 1\n").string()});
