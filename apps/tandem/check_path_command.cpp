@@ -15,7 +15,7 @@ namespace {
 struct CheckArgs {
   ProblemArgs problem;
   std::string path_file;
-  /// --validation and --tolerance, read as the planners' tunables are.
+  /// --validation, --tolerance and --clearance, read as the planners' tunables are.
   PlannerSettings settings;
 };
 
@@ -51,7 +51,7 @@ Command add_check_path_command(CLI::App& app) {
   app.add_option("PATHFILE", args->path_file,
                  "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
       ->required();
-  for (const char* name : {"validation", "tolerance"}) {
+  for (const char* name : {"validation", "tolerance", "clearance"}) {
     const Param<PlannerSettings>& p = *find_param(planner_parameters(), name);
     app.add_option_function<std::string>(
         p.spec.option(),

@@ -71,7 +71,8 @@ Problem load_problem(const ProblemArgs& args) {
   return problem;
 }
 
-void require_valid_endpoints(const Problem& problem, CollisionChecker& checker) {
+void require_valid_endpoints(const Problem& problem, CollisionChecker& checker,
+                             const ValidationSettings& validation) {
   const std::pair<const char*, const Config*> ends[] = {{"start", &problem.start},
                                                         {"goal", &problem.goal}};
   for (const auto& [what, q] : ends) {
@@ -85,6 +86,13 @@ void require_valid_endpoints(const Problem& problem, CollisionChecker& checker) 
       throw InputError(problem.source, std::string("the ") + what +
                                            " is in collision with obstacle '" +
                                            checker.obstacle_name(near.obstacle) + "'");
+    }
+    if (validation.clearance > 0.0 && near.distance < validation.clearance) {
+      std::ostringstream os;
+      os << "the " << what << " is " << near.distance << " from obstacle '"
+         << checker.obstacle_name(near.obstacle) << "', closer than --clearance "
+         << validation.clearance;
+      throw InputError(problem.source, os.str());
     }
   }
 }

@@ -27,6 +27,8 @@ Problem load_problem(const ProblemArgs& args);
 
 /// Throws InputError (naming the problem) if the start or the goal is outside the bounds or
 /// collides, naming the obstacle it touches.
-void require_valid_endpoints(const Problem& problem, CollisionChecker& checker);
+/// With a clearance (ValidationSettings::clearance), also if either is closer than it.
+void require_valid_endpoints(const Problem& problem, CollisionChecker& checker,
+                             const ValidationSettings& validation = {});
 
 }  // namespace tandem::cli

@@ -108,7 +108,7 @@ RunSpec live_spec(InteractiveArgs& args, const Problem& problem) {
   if (!args.run.time_limit)
     spec.time_limit = 600.0;
   CollisionChecker checker(problem.scene);
-  require_valid_endpoints(problem, checker);
+  require_valid_endpoints(problem, checker, validation_settings(spec.settings));
   return spec;
 }
 

@@ -160,7 +160,7 @@ int run_plan(const PlanArgs& args) {
     spec.settings.threads = resolve_threads(spec);
 
   CollisionChecker checker(problem.scene);
-  require_valid_endpoints(problem, checker);
+  require_valid_endpoints(problem, checker, validation_settings(spec.settings));
   const RunOutcome run = execute_run(problem, spec, checker);
   const bool solved = run.status == PlannerStatus::solved;
   // The path is simplified and checked the way the planner checked its motions.

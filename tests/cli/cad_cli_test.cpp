@@ -205,6 +205,26 @@ TEST_F(CadCliTest, ClearanceAlongAWayOutAsTextJsonAndCsv) {
   EXPECT_EQ(run_tandem({"clearance", step_.string(), "--part", "peg", "nope.path"}).exit_code, 2);
 }
 
+TEST_F(CadCliTest, APlanWithAClearanceKeepsItAlongTheWholeWay) {
+  const auto path = (dir_.path() / "clear.path").string();
+  const auto plan = run_tandem({"plan", step_.string(), "--part", "peg", "--clearance", "0.0004",
+                                "--seed", "2", "--out", path});
+  ASSERT_EQ(plan.exit_code, 0) << plan.out << plan.err;
+  const auto c = run_tandem({"clearance", step_.string(), "--part", "peg", path, "--json"});
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_GE(nlohmann::json::parse(c.out)["min_clearance"].get<double>(), 0.0004);
+  const auto check = check_take_out(step_, path, {"--clearance", "0.0004"});
+  EXPECT_EQ(check.code, 0) << check.text;
+  // Seated 0.56 mm above the pocket's floor: a clearance of 1 mm cannot be kept from the start.
+  const auto far = run_tandem({"plan", step_.string(), "--part", "peg", "--clearance", "0.001"});
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_THAT(far.err, HasSubstr("closer than --clearance 0.001"));
+  const auto discrete = run_tandem({"plan", step_.string(), "--part", "peg", "--clearance",
+                                    "0.0004", "--validation", "discrete"});
+  EXPECT_EQ(discrete.exit_code, 2);
+  EXPECT_THAT(discrete.err, HasSubstr("needs exact validation"));
+}
+
 TEST_F(CadCliTest, AScenarioNamingNoSuchPartOrTwoObjectsExitsWithCodeTwo) {
   auto r = run_tandem(
       {"check-path", scenario("bolt").string(), path_file("p.path", "0 0 0 0 0 0 1\n").string()});

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "support/problems.hpp"
+#include "tandem/core/error.hpp"
 
 namespace tandem {
 namespace {
@@ -22,6 +24,32 @@ TEST(MotionValidator, AcceptsMotionsThroughTheGapAndRejectsThoseThroughTheWall) 
   Config turned_start = turned;
   turned_start.t.x() = -2;
   EXPECT_FALSE(f.validator.check_motion(turned_start, turned));
+}
+
+TEST(MotionValidator, AClearanceKeepsEveryConfigurationOfAMotionThatFarFromTheObstacles) {
+  Fixture f;
+  // Through the middle of the 0.6 m gap, the 0.2 m wide bar is 0.2 m from either side.
+  const Config a = at(-2, 0), b = at(2, 0);
+  for (double clearance : {0.1, 0.19}) {
+    f.validator.configure({MotionValidation::exact, 0.0, true, clearance});
+    EXPECT_TRUE(f.validator.check_motion(a, b)) << clearance;
+    EXPECT_TRUE(f.validator.check_motion_last_valid(a, b).valid) << clearance;
+  }
+  for (double clearance : {0.21, 0.5}) {
+    f.validator.configure({MotionValidation::exact, 0.0, true, clearance});
+    EXPECT_FALSE(f.validator.check_motion(a, b)) << clearance;
+    EXPECT_TRUE(f.validator.is_valid(a)) << clearance;  // 1.45 m from the wall
+    // Swept toward the gap, the bar stops before its front corners are `clearance` from the
+    // gap's edges, 0.2 aside: its front (0.5 ahead of its centre) 0.05 + sqrt(c^2 - 0.2^2)
+    // before the wall's centre plane.
+    const MotionCheck m = f.validator.check_motion_last_valid(a, b);
+    EXPECT_FALSE(m.valid);
+    const double front = -0.05 - std::sqrt(clearance * clearance - 0.04);
+    EXPECT_LE(m.last_valid.t.x() + 0.5, front + 1e-9) << clearance;
+    EXPECT_GE(m.last_valid.t.x() + 0.5, front - 0.1) << clearance;  // and not far before
+  }
+  EXPECT_THROW(f.validator.configure({MotionValidation::discrete, 0.0, true, 0.1}), InputError);
+  EXPECT_THROW(f.validator.configure({MotionValidation::exact, 0.0, true, -0.1}), InputError);
 }
 
 TEST(MotionValidator, ChecksTheEndStateAndEveryStep) {

@@ -172,7 +172,8 @@ test('in VR (an emulated headset) the grip holds the part, operator nodes grow w
     await hand([at[0] + 0.4, at[1] + 0.5, at[2]]);
     await waitFor(page, ([t, tol]) => Math.hypot(...window.tandem.partPose().slice(0, 3).map((v, k) => v - t[k])) < tol, [lifted, 1e-4]);
     assert.ok(turn(await pose(), start) < 1e-3, 'a hand that does not turn does not turn the part');
-    await waitFor(page, (t) => window.tandem.operatorNodes().some((n) => Math.hypot(n[0] - t[0], n[1] - t[1], n[2] - t[2]) < 0.05), lifted);
+    // (The idle hand's contact samples make the tree large by now: the page searches it slowly.)
+    await waitFor(page, (t) => window.tandem.operatorNodes().some((n) => Math.hypot(n[0] - t[0], n[1] - t[1], n[2] - t[2]) < 0.05), lifted, 60000);
     // Turning the hand 30 degrees about the vertical turns the part 30 degrees.
     const s = Math.sin(Math.PI / 12), c = Math.cos(Math.PI / 12);
     await hand([at[0] + 0.4, at[1] + 0.5, at[2]], [0, s, 0, c]);
@@ -185,6 +186,16 @@ test('in VR (an emulated headset) the grip holds the part, operator nodes grow w
     // Letting go leaves the part where it is: the hand moves on without it.
     await squeeze(0);
     await waitFor(page, () => !window.tandem.xr.holding);
+    // Released as the hand left it, turned, and the server's operator there too. (Just after
+    // letting go the page may show, for a moment, a pose the server echoed from before the turn:
+    // a flicker, noted and not fixed; the pose then settles where the part was let go.)
+    await waitFor(page, ([q0, t0]) => {
+      const q = window.tandem.partPose(), o = window.tandem.operator.q;
+      const dot = Math.abs(q[3] * q0[3] + q[4] * q0[4] + q[5] * q0[5] + q[6] * q0[6]);
+      return Math.abs(2 * Math.acos(Math.min(1, dot)) - Math.PI / 6) < 1e-3 &&
+        Math.hypot(q[0] - t0[0], q[1] - t0[1], q[2] - t0[2]) < 1e-4 &&
+        q.every((v, k) => Math.abs(v - o[k]) < 1e-6);
+    }, [start, lifted]);
     const released = await pose();
     const h = [at[0] - 0.3, at[1] + 0.2, at[2] + 0.2];
     await hand(h, [0, 0, 0, 1]);

@@ -44,6 +44,10 @@ struct ValidationSettings {
   /// cells of half a resolution step; off: FCL alone. The grid belongs to the checker, so
   /// validators that share a checker share it too.
   bool distance_grid = true;
+  /// Exact mode: every configuration of a valid motion is at least this far from every obstacle
+  /// (and the tolerance more). Every clearance bound is taken less this margin, so the
+  /// certification above holds for the obstacles grown by it.
+  double clearance = 0.0;
 };
 
 struct MotionCheck {
@@ -113,8 +117,11 @@ class MotionValidator {
   template <class Query>
   auto counted(Query query);
   bool collision_free(const Config& q);
-  /// checker_.clearance_bound(q, cap), FCL's cap limited to one resolution step.
+  /// checker_.clearance_bound(q, cap), FCL's cap limited to a quarter resolution step.
   double clearance(const Config& q, double cap);
+  /// With a clearance margin: the bound beyond it (clearance(q, cap + margin) - margin), exact
+  /// near the margin.
+  double clearance_beyond_margin(const Config& q, double cap);
   /// L: no point of the object moves more than L |s - s'| between fractions s and s' of a -> b.
   double displacement_rate(const Config& a, const Config& b) const;
   bool check_motion_discrete(const Config& a, const Config& b);
@@ -129,6 +136,7 @@ class MotionValidator {
   CollisionChecker& checker_;
   MotionValidation mode_ = MotionValidation::exact;
   double tolerance_ = 0.0;
+  double margin_ = 0.0;  ///< ValidationSettings::clearance
   std::uint64_t checks_ = 0;
   bool profiling_ = false;
   double check_seconds_ = 0.0;

@@ -11,7 +11,7 @@ namespace {
 
 using S = PlannerSettings;
 
-/// How motions are checked: validation, tolerance, distance_grid.
+/// How motions are checked: validation, tolerance, clearance, distance_grid.
 void add_validation_params(ParamTable<S>& t) {
   const double inf = std::numeric_limits<double>::infinity();
   t.push_back(choice_param<S>(
@@ -31,6 +31,16 @@ void add_validation_params(ParamTable<S>& t) {
        .help = "Exact validation: closer than this to an obstacle counts as contact (0: 1e-6 x "
                "the bounds' diagonal)"},
       &S::tolerance));
+  t.push_back(real_param<S>(
+      {.name = "clearance",
+       .label = "clearance",
+       .unit = "m",
+       .min = 0.0,
+       .max = inf,
+       .help = "Exact validation: keep at least this far from every obstacle at every "
+               "configuration of every motion, as a path finder's clash accuracy (0: only the "
+               "contact tolerance)"},
+      &S::clearance));
   t.push_back(choice_param<S>(
       {.name = "distance_grid",
        .label = "distance grid",

@@ -50,6 +50,9 @@ struct PlannerSettings {
   /// Closer than this to an obstacle counts as contact (exact validation); 0: 1e-6 x the bounds'
   /// diagonal.
   double tolerance = 0.0;
+  /// Keep at least this far from every obstacle along every motion (exact validation; a path
+  /// finder's clash accuracy); 0: only the contact tolerance.
+  double clearance = 0.0;
   /// The distance-grid pre-filter of collision queries (ValidationSettings::distance_grid).
   bool distance_grid = true;
   /// Independent searches run at once by the planners that plan alone (runs/portfolio.hpp); 0:
@@ -63,11 +66,12 @@ struct PlannerSettings {
 
 /// How a planner with these settings checks motions (its validator is configured so).
 inline ValidationSettings validation_settings(const PlannerSettings& s) {
-  return {s.validation, s.tolerance, s.distance_grid};
+  return {s.validation, s.tolerance, s.distance_grid, s.clearance};
 }
 
 /// The declarations of PlannerSettings' tunable fields (range, goal_bias, extend,
-/// nearest_neighbors, validation, tolerance, distance_grid, threads); the seed is the run's, not a tunable.
+/// nearest_neighbors, validation, tolerance, clearance, distance_grid, threads); the seed is the
+/// run's, not a tunable.
 const ParamTable<PlannerSettings>& planner_parameters();
 
 }  // namespace tandem
