@@ -48,9 +48,7 @@ int run_check(const CheckArgs& args) {
 Command add_check_path_command(CLI::App& app) {
   auto args = std::make_shared<CheckArgs>();
   add_problem_args(app, args->problem);
-  app.add_option("PATHFILE", args->path_file,
-                 "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
-      ->required();
+  add_path_file_arg(app, args->path_file);
   for (const char* name : {"validation", "tolerance", "clearance"}) {
     const Param<PlannerSettings>& p = *find_param(planner_parameters(), name);
     app.add_option_function<std::string>(

@@ -107,9 +107,7 @@ int run_clearance(const ClearanceArgs& args) {
 Command add_clearance_command(CLI::App& app) {
   auto args = std::make_shared<ClearanceArgs>();
   add_problem_args(app, args->problem);
-  app.add_option("PATHFILE", args->path_file,
-                 "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
-      ->required();
+  add_path_file_arg(app, args->path_file);
   app.add_option("--accuracy", args->accuracy,
                  "The share of the smallest measured distance by which the certified minimum of "
                  "a motion may fall short of it")

@@ -19,6 +19,13 @@ void add_problem_args(CLI::App& command, ProblemArgs& args) {
   add_take_out_args(command, args.take_out);
 }
 
+void add_path_file_arg(CLI::App& command, std::string& path_file) {
+  command
+      .add_option("PATHFILE", path_file,
+                  "A path in OMPL's format (x y z qx qy qz qw, or x y theta)")
+      ->required();
+}
+
 void add_tessellation_args(CLI::App& command, CadOptions& o, const std::string& group) {
   command
       .add_option("--linear-deflection", o.linear_deflection,

@@ -19,6 +19,8 @@ struct ProblemArgs {
 };
 
 void add_problem_args(CLI::App& command, ProblemArgs& args);
+/// The required PATHFILE argument of the commands that read a path.
+void add_path_file_arg(CLI::App& command, std::string& path_file);
 /// --linear-deflection and --angular-deflection, in the help's `group`.
 void add_tessellation_args(CLI::App& command, CadOptions& options, const std::string& group);
 /// --part, --margin, --seat-tolerance and the tessellation's deflections.

@@ -1,5 +1,6 @@
 #include "tandem/core/text.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <fstream>
@@ -43,7 +44,11 @@ std::optional<std::uint64_t> parse_uint(std::string_view s) {
   return v;
 }
 
-std::string read_text_file(const std::filesystem::path& file) {
+namespace {
+
+/// The file opened for reading; InputError naming it if it is missing, not a regular file, or
+/// cannot be opened.
+std::ifstream open_for_reading(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code ec;
   if (!std::filesystem::exists(file, ec))
@@ -53,10 +58,39 @@ std::string read_text_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in)
     throw InputError(name, "cannot be opened for reading");
+  return in;
+}
+
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& file) {
+  std::ifstream in = open_for_reading(file);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad())
-    throw InputError(name, "read error");
+    throw InputError(file.string(), "read error");
   return text;
+}
+
+FileEnds read_file_ends(const std::filesystem::path& file, std::size_t bytes) {
+  std::ifstream in = open_for_reading(file);
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<std::size_t>(in.tellg());
+  const std::size_t n = std::min(size, bytes);
+  FileEnds ends{std::string(n, '\0'), std::string(n, '\0')};
+  in.seekg(0);
+  in.read(ends.head.data(), static_cast<std::streamsize>(n));
+  in.seekg(static_cast<std::streamoff>(size - n));
+  in.read(ends.tail.data(), static_cast<std::streamsize>(n));
+  if (!in)
+    throw InputError(file.string(), "read error");
+  return ends;
+}
+
+std::string lower_extension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& text) {

@@ -23,6 +23,17 @@ std::optional<std::uint64_t> parse_uint(std::string_view s);
 /// unreadable.
 std::string read_text_file(const std::filesystem::path& file);
 
+/// The first and the last `bytes` bytes of a file (the whole file in both when it is shorter):
+/// to check how a large file begins and ends without reading it all. Throws InputError as
+/// read_text_file does.
+struct FileEnds {
+  std::string head, tail;
+};
+FileEnds read_file_ends(const std::filesystem::path& file, std::size_t bytes);
+
+/// The file name's extension, with its dot, in lower case ("part.STL" -> ".stl").
+std::string lower_extension(const std::filesystem::path& file);
+
 /// Writes `text` to a temporary file beside `file`, then renames it over `file`: a crash never
 /// leaves a half-written file. Throws InputError naming the file.
 void write_file_atomically(const std::filesystem::path& file, const std::string& text);

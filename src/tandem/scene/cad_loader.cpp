@@ -24,71 +24,47 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <gp_Quaternion.hxx>
 #include <map>
 #include <mutex>
 #include <set>
-#include <sstream>
 
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 
 namespace tandem {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 bool is_step(const std::filesystem::path& file) {
   const std::string ext = lower_extension(file);
   return ext == ".step" || ext == ".stp";
 }
 
-std::string trimmed(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-    return {};
-  return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
-
 /// The file's own framing, checked before OCCT reads it: OCCT reads what it can of a truncated
 /// file without complaint. A STEP file opens with ISO-10303-21; and closes with END-ISO-10303-21;
-/// (ISO 10303-21); an IGES file's last record is its terminate section (T in column 73).
-void check_framing(const std::filesystem::path& file, const std::string& text) {
-  const std::string body = trimmed(text);
-  if (body.empty())
+/// (ISO 10303-21); an IGES file's last record is its terminate section (T in column 73). Only the
+/// file's ends are read (OCCT reads the whole of it next).
+void check_framing(const std::filesystem::path& file) {
+  const FileEnds ends = read_file_ends(file, 4096);
+  const std::string head = trim(ends.head), tail = trim(ends.tail);
+  if (head.empty() && tail.empty())
     throw InputError(file.string(), "the file is empty");
   if (is_step(file)) {
-    if (body.rfind("ISO-10303-21;", 0) != 0)
+    if (head.rfind("ISO-10303-21;", 0) != 0)
       throw InputError(file.string(), "not a STEP file (it does not begin with ISO-10303-21;)");
-    if (body.size() < 17 || body.substr(body.size() - 17) != "END-ISO-10303-21;")
+    const std::string end = "END-ISO-10303-21;";
+    if (tail.size() < end.size() || tail.substr(tail.size() - end.size()) != end)
       throw InputError(file.string(), "truncated STEP file (no END-ISO-10303-21; at its end)");
     return;
   }
   // IGES records are 80 columns, the section letter in column 73; leading blanks count.
-  std::string last = text.substr(0, text.find_last_not_of(" \t\r\n") + 1);
+  std::string last = ends.tail.substr(0, ends.tail.find_last_not_of(" \t\r\n") + 1);
   last = last.substr(last.find_last_of('\n') + 1);
-  const std::string first = text.substr(0, text.find_first_of("\r\n"));
+  const std::string first = ends.head.substr(0, ends.head.find_first_of("\r\n"));
   if (first.size() < 73 || first[72] != 'S')
     throw InputError(file.string(), "not an IGES file (its first record is no start record)");
   if (last.size() < 73 || last[72] != 'T')
     throw InputError(file.string(), "truncated IGES file (its last record is no terminate record)");
-}
-
-std::string read_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(file.string(), "no such file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw InputError(file.string(), "cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 /// OCCT reports through its default messenger on stdout; tandem's output stays its own.
@@ -179,7 +155,7 @@ std::string label_name(const TDF_Label& label) {
   Handle(TDataStd_Name) name;
   if (label.IsNull() || !label.FindAttribute(TDataStd_Name::GetID(), name))
     return {};
-  return trimmed(TCollection_AsciiString(name->Get()).ToCString());
+  return trim(TCollection_AsciiString(name->Get()).ToCString());
 }
 
 std::string entry(const TDF_Label& label) {
@@ -290,7 +266,7 @@ CadAssembly load_cad(const std::filesystem::path& file, const CadOptions& option
   if (!(options.linear_deflection >= 0.0) || !(options.angular_deflection > 0.0) ||
       !std::isfinite(options.linear_deflection) || !std::isfinite(options.angular_deflection))
     throw InputError(file.string(), "the tessellation's deflections must be positive numbers");
-  check_framing(file, read_file(file));
+  check_framing(file);
   static std::mutex occt;  // OCCT's readers keep global state (Interface_Static, the messenger)
   const std::lock_guard<std::mutex> lock(occt);
   quiet_occt();

@@ -6,6 +6,12 @@
 namespace tandem {
 
 bool GoalRegion::contains(const Config& q) const {
+  const auto [lo, hi] = posed_box(q);
+  // Outside when the two boxes are apart along some axis.
+  return (hi.array() < min.array()).any() || (lo.array() > max.array()).any();
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> GoalRegion::posed_box(const Config& q) const {
   const Eigen::Isometry3d X = q.pose();
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
@@ -14,8 +20,7 @@ bool GoalRegion::contains(const Config& q) const {
     lo = lo.cwiseMin(w);
     hi = hi.cwiseMax(w);
   }
-  // Outside when the two boxes are apart along some axis.
-  return (hi.array() < min.array()).any() || (lo.array() > max.array()).any();
+  return {lo, hi};
 }
 
 }  // namespace tandem

@@ -6,6 +6,7 @@
 // the grown box. A part diagonally beside a corner of the box may count as inside: conservative.
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "tandem/space/config.hpp"
@@ -20,6 +21,8 @@ struct GoalRegion {
 
   /// Whether the object posed at q is in the region.
   bool contains(const Config& q) const;
+  /// The bounding box (min, max) of the object's points posed at q, in the world frame.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> posed_box(const Config& q) const;
 };
 
 }  // namespace tandem

@@ -10,16 +10,10 @@
 #include <fstream>
 
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 
 namespace tandem {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 // The vertex sum is accumulated in single precision, in the order OMPL.app visits the vertices, so
 // the centre matches OMPL.app's to the bit.

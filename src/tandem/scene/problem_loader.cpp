@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 #include "tandem/scene/builtin_scenes.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 #include "tandem/scene/scenario_file.hpp"
@@ -15,9 +16,7 @@ Problem load_problem(const std::string& spec, const ProblemLoadOptions& options)
   if (std::filesystem::exists(path, ec)) {
     if (std::filesystem::is_directory(path, ec))
       throw InputError(spec, "is a folder, not a problem file");
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lower_extension(path);
     if (is_cad_file(path))
       return take_out_problem(path, options.take_out);
     if (!options.take_out.part.empty())

@@ -10,12 +10,7 @@ namespace {
 
 /// The seat moved straight out along the axis direction that leaves the region's box soonest.
 Config nearest_exit(const GoalRegion& region, const Config& seat) {
-  const Eigen::Isometry3d X = seat.pose();
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-  for (const auto& p : region.points) {
-    lo = lo.cwiseMin(X * p);
-    hi = hi.cwiseMax(X * p);
-  }
+  const auto [lo, hi] = region.posed_box(seat);
   const double clear = 0.01 * region.margin;  // strictly outside
   Config best = seat;
   double shortest = INFINITY;
