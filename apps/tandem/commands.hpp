@@ -16,6 +16,7 @@ Command add_check_path_command(CLI::App& app);
 Command add_scenes_command(CLI::App& app);
 Command add_parts_command(CLI::App& app);
 Command add_clearance_command(CLI::App& app);
+Command add_export_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_interactive_command(CLI::App& app);

@@ -39,6 +39,10 @@ int run(int argc, char** argv) {
   add("clearance",
       "How close a path's part comes to the obstacles along the whole motion, and to which",
       tandem::cli::add_clearance_command);
+  add("export",
+      "A path as an animation (.glb, or an offline .html page) and the part's motion envelope "
+      "(.stl)",
+      tandem::cli::add_export_command);
   add("scenes", "List the built-in scenes, or print one's scenario file",
       tandem::cli::add_scenes_command);
   add("parts", "List the assembly tree of a STEP or IGES file: names, sizes, colours",
