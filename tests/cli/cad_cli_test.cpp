@@ -4,7 +4,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "support/cad_assembly.hpp"
@@ -235,6 +237,64 @@ TEST_F(CadCliTest, AScenarioNamingNoSuchPartOrTwoObjectsExitsWithCodeTwo) {
                   path_file("p.path", "0 0 0 0 0 0 1\n").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("the object is given twice"));
+}
+
+}  // namespace
+}  // namespace tandem
+
+namespace tandem {
+namespace {
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(ExportCli, AWayOutBecomesAnAnimationAPageAndAnEnvelope) {
+  test::TempDir dir;
+  const auto step = (dir.path() / "housing.step").string();
+  test::write_housing(step);
+  const auto path =
+      dir.write("out.path", "0 0 0.025 0 0 0 1\n0 0 0.059 0 0 0 1\n0.1 0 0.059 0 0 0 1\n");
+  const auto out = [&](const char* name) { return (dir.path() / name).string(); };
+  const auto r = test::run_tandem({"export", step, path.string(), "--part", "peg", "--glb",
+                                   out("a.glb"), "--html", out("a.html"), "--stl", out("e.stl"),
+                                   "--envelope", "--voxel", "0.002"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("contains the part along the whole motion"));
+  const std::string glb = file_text(out("a.glb")), page = file_text(out("a.html")),
+                    stl = file_text(out("e.stl"));
+  EXPECT_EQ(glb.substr(0, 4), "glTF");
+  EXPECT_THAT(page, HasSubstr("<title>take peg out of housing: out.path</title>"));
+  EXPECT_THAT(page, HasSubstr("id=\"tandem-glb\""));
+  EXPECT_GT(page.size(), glb.size() + 100000);  // the glb in base64, and three.js
+  ASSERT_GT(stl.size(), 84u);
+  std::uint32_t triangles = 0;
+  std::memcpy(&triangles, stl.data() + 80, 4);
+  EXPECT_GT(triangles, 100u);
+  EXPECT_EQ(stl.size(), 84u + 50u * triangles);
+}
+
+TEST(ExportCli, BadRequestsExitWithCodeTwoNamingTheFault) {
+  test::TempDir dir;
+  const auto path = dir.write("p.path", "0 0 0 0 0 0 1\n").string();
+  const auto glb = (dir.path() / "a.glb").string();
+  auto r = test::run_tandem({"export", "cluttered-1", path});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("nothing to write: give --glb, --html or --stl"));
+  r = test::run_tandem({"export", "cluttered-1", path, "--glb", glb, "--duration", "0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--duration"));
+  r = test::run_tandem({"export", "cluttered-1", path, "--stl", glb, "--voxel", "1e-9"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--voxel: too small"));
+  r = test::run_tandem({"export", "cluttered-1", "nope.path", "--glb", glb});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("nope.path"));
+  r = test::run_tandem(
+      {"export", "cluttered-1", path, "--glb", (dir.path() / "no" / "a.glb").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("cannot be written"));
 }
 
 }  // namespace
