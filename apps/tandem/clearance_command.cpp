@@ -3,11 +3,11 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/io/clearance_json.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path_clearance.hpp"
 
@@ -21,34 +21,6 @@ struct ClearanceArgs {
   bool json = false;
   std::string csv;
 };
-
-nlohmann::json point(const Eigen::Vector3d& p) {
-  return {p.x(), p.y(), p.z()};
-}
-
-nlohmann::json to_json(const PathClearance& c, const CollisionChecker& checker) {
-  nlohmann::json states = nlohmann::json::array(), segments = nlohmann::json::array();
-  for (const auto& s : c.states)
-    states.push_back({{"distance", s.distance},
-                      {"obstacle", checker.obstacle_name(s.obstacle)},
-                      {"point_on_object", point(s.point_on_object)},
-                      {"point_on_obstacle", point(s.point_on_obstacle)}});
-  for (std::size_t i = 0; i < c.segments.size(); ++i) {
-    const SegmentClearance& s = c.segments[i];
-    segments.push_back({{"from", i},
-                        {"to", i + 1},
-                        {"lower", s.lower},
-                        {"found", s.found},
-                        {"at", s.at},
-                        {"obstacle", checker.obstacle_name(s.obstacle)},
-                        {"queries", s.queries}});
-  }
-  return {{"min_clearance", c.lower()},
-          {"accuracy", c.accuracy},
-          {"floor", c.floor},
-          {"states", states},
-          {"segments", segments}};
-}
 
 /// One row per state, then one per motion: what, where, the certified and the measured minimum.
 void write_csv(const std::string& file, const PathClearance& c, const CollisionChecker& checker) {
@@ -96,7 +68,7 @@ int run_clearance(const ClearanceArgs& args) {
   if (!args.csv.empty())
     write_csv(args.csv, c, checker);
   if (args.json)
-    std::cout << to_json(c, checker).dump(2) << '\n';
+    std::cout << clearance_json(c, checker).dump(2) << '\n';
   else
     print(args, c, checker);
   return 0;

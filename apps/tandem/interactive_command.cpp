@@ -9,11 +9,13 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "part_picker.hpp"
 #include "run_options.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/io/path_file.hpp"
 #include "tandem/planning/path.hpp"
+#include "tandem/scene/cad_loader.hpp"
 #include "tandem/session/live_session.hpp"
 #include "tandem/web/viewer_server.hpp"
 #include "viewer_options.hpp"
@@ -88,6 +90,8 @@ class LiveControl final : public ViewerControl {
         else
           session_.reset();
         return std::nullopt;
+      case ClientMessage::Kind::take_out:
+        return "this session already moves its part: a new part needs a new session";
     }
     return "unknown message";
   }
@@ -104,6 +108,10 @@ RunSpec live_spec(InteractiveArgs& args, const Problem& problem) {
   if (!args.run.mode)
     args.run.mode = "interactive-contact";
   RunSpec spec = make_spec(args.run, problem);
+  // A problem without a guide (an assembly's part taken out) has no simulated operator: the part
+  // waits for the person in the viewer.
+  if (problem.guide.empty() && !args.run.tunables.contains("operator"))
+    spec.operator_name = "browser";
   require_live_planner(spec);
   if (!args.run.time_limit)
     spec.time_limit = 600.0;
@@ -209,6 +217,15 @@ int finish_session(const InteractiveArgs& args, const Problem& problem, const Li
 int run_interactive(InteractiveArgs args) {
   if (!args.headless)
     check_server_options(server_options(args.viewer));
+  ProblemArgs& what = args.run.problem;
+  if (!args.headless && is_cad_file(what.problem) && what.take_out.part.empty()) {
+    const std::optional<std::string> part = pick_part_in_viewer(what, args.viewer);
+    if (!part) {
+      std::cout << "no part chosen\n";
+      return 1;
+    }
+    what.take_out.part = *part;
+  }
   const Problem problem = load_problem(args.run.problem);
   const RunSpec spec = live_spec(args, problem);
   LiveSession session(problem, spec, live_options(args, problem));

@@ -16,6 +16,7 @@ ServerOptions server_options(const ViewerArgs& args) {
   ServerOptions o;
   o.host = args.host;
   o.port = static_cast<unsigned short>(args.port);
+  o.token = args.token;
   o.web_root = args.web_root.empty() ? default_web_root() : std::filesystem::path(args.web_root);
   return o;
 }

@@ -12,6 +12,8 @@ struct ViewerArgs {
   std::string host = "127.0.0.1";
   int port = 8170;
   std::string web_root;
+  std::string
+      token;  ///< not an option: empty for a random one; set to keep a page's across servers
 };
 
 void add_viewer_options(CLI::App& app, ViewerArgs& args);

@@ -46,6 +46,11 @@ TEST(Protocol, RefusesEveryMalformedOrHostileMessage) {
   EXPECT_THAT(refusal("{\"type\":\"input\",\"input\":\"joystick\"}"), HasSubstr("input must"));
   EXPECT_THAT(refusal("{\"type\":\"command\",\"command\":\"quit\"}"), HasSubstr("command must"));
   EXPECT_THAT(refusal(std::string(kMaxMessageBytes + 1, ' ')), HasSubstr("too long"));
+  EXPECT_THAT(refusal("{\"type\":\"take_out\"}"), HasSubstr("take_out needs a part"));
+  EXPECT_THAT(refusal("{\"type\":\"take_out\",\"part\":3}"), HasSubstr("take_out needs a part"));
+  EXPECT_THAT(refusal("{\"type\":\"take_out\",\"part\":\"\"}"), HasSubstr("1 to 1024 bytes"));
+  EXPECT_THAT(refusal("{\"type\":\"take_out\",\"part\":\"" + std::string(1025, 'x') + "\"}"),
+              HasSubstr("1 to 1024 bytes"));
 }
 
 TEST(Protocol, ParsesWhatTheViewerSends) {
@@ -67,6 +72,10 @@ TEST(Protocol, ParsesWhatTheViewerSends) {
             OperatorInput::simulated);
   EXPECT_EQ(parse_client_message("{\"type\":\"command\",\"command\":\"step\"}", {}).command,
             "step");
+  const ClientMessage take_out =
+      parse_client_message("{\"type\":\"take_out\",\"part\":\"bracket/walls/wall-left\"}", {});
+  EXPECT_EQ(take_out.kind, ClientMessage::Kind::take_out);
+  EXPECT_EQ(take_out.part, "bracket/walls/wall-left");
 }
 
 TEST(Protocol, NodeMessagesAreLaidOutAsTheBrowserReadsThem) {

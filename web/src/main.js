@@ -12,6 +12,8 @@ import { Connection } from './connection.js';
 import { StatusPanel } from './status-panel.js';
 import { TuningPanel } from './tuning-panel.js';
 import { Playback } from './playback.js';
+import { SolutionProducts } from './solution-products.js';
+import { AssemblyPicker } from './assembly-picker.js';
 import { OperatorInput } from './operator-input.js';
 import { FrameLoop } from './frame-loop.js';
 import { VrOperator } from './xr.js';
@@ -28,16 +30,25 @@ function start(query) {
   const panel = new StatusPanel(() => ({ fps: loop.fps, drawnEdges: view.layers.drawn, edges: view.trees.edgeCount() }));
   const notify = (text, cls) => panel.showMessage(text, cls);
   const tuning = new TuningPanel(connection);
-  const playback = new Playback(view, { touch, notify });
+  const products = new SolutionProducts(view, { touch, notify });
+  const playback = new Playback(view, { touch, notify, products });
   const input = new OperatorInput(view, { send: (m) => connection.send(m), touch, notify });
   view.onChange = touch;
   $('colour-by').onchange = (e) => { view.trees.setColourBy(e.target.value); touch(); };
   $('show-nodes').onchange = (e) => { view.trees.setShowNodes(e.target.value); touch(); };
 
-  let hello = null;
+  const picker = new AssemblyPicker(view, { send: (m) => connection.send(m), touch, notify });
+  let hello = null, scene = null;
   const restart = (generation) => { view.trees.clear(generation); playback.clear(); };
   const messages = {
-    hello: (m) => { hello = m; restart(m.generation); tuning.build(m.parameters); },
+    hello: (m) => {
+      // Another problem on this address (the session of the part chosen here): start afresh.
+      if (scene && m.problem !== scene.name) { location.reload(); return; }
+      hello = m;
+      restart(m.generation);
+      tuning.build(m.parameters);
+      if (m.mode === 'pick' && !picker.active) picker.start(scene);
+    },
     reset: (m) => restart(m.generation),
     status: (m) => { input.onStatus(m); panel.show(m); tuning.onStatus(m); },
     operator: (m) => loop.setOperator(m),
@@ -50,9 +61,10 @@ function start(query) {
     return ok;
   };
   const xr = new VrOperator(view, input, { notify });
-  exposePageApi({ connection, view, loop, panel, input, playback, xr, hello: () => hello });
+  exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, hello: () => hello });
   connection.scene()
     .then((s) => {
+      scene = s;
       panel.setProblem(s.name);
       view.load(s);
       connection.open({ nodes, messages, state: (text, cls) => panel.setConnection(text, cls) });

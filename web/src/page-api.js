@@ -3,10 +3,10 @@
 
 /**
  * @param parts the page's pieces: `connection`, `view` (SceneView), `loop` (FrameLoop), `panel`
- *   (StatusPanel), `input` (OperatorInput), `playback`, `xr` (VrOperator), `hello` (() => the
- *   last hello message)
+ *   (StatusPanel), `input` (OperatorInput), `playback`, `products` (SolutionProducts), `picker`
+ *   (AssemblyPicker), `xr` (VrOperator), `hello` (() => the last hello message)
  */
-export function exposePageApi({ connection, view, loop, panel, input, playback, xr, hello }) {
+export function exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, hello }) {
   window.tandem = {
     get connected() { return connection.connected; },
     get hello() { return hello(); },
@@ -21,6 +21,18 @@ export function exposePageApi({ connection, view, loop, panel, input, playback, 
     redraw(on) { loop.redrawAlways = on; },
     get frames() { return loop.frames; },
     get solution() { return playback.solution; },
+    /** The solution's clearance as the server sent it (null until then), and the line's colours
+     * ([r, g, b] per vertex; null while it is drawn plain). */
+    get clearance() { return products.clearance; },
+    solutionLineColours: () => {
+      const c = view.pathLine?.geometry.getAttribute('color');
+      return c ? Array.from({ length: c.count }, (_, i) => [c.getX(i), c.getY(i), c.getZ(i)]) : null;
+    },
+    /** Choosing a part of an assembly: whether the page is, and the part selected. */
+    get picking() { return picker.active; },
+    get pickedPart() { return picker.selected; },
+    /** The motion envelope shown: its triangle count, or 0. */
+    envelopeTriangles: () => (view.envelope?.visible ? view.envelope.geometry.attributes.position.count / 3 : 0),
     get errors() { return panel.errors.slice(); },
     get latencies() { return input.latencies; },
     counts: () => view.trees.counts(),

@@ -7,9 +7,11 @@ export class Playback {
    * @param view the SceneView
    * @param touch () => void: the picture changed
    * @param notify (text, cls) => void: a message for the panel
+   * @param products the SolutionProducts (clearance colours, envelope)
    */
-  constructor(view, { touch, notify }) {
+  constructor(view, { touch, notify, products }) {
     this.view = view;
+    this.products = products;
     this.touch = touch;
     this.notify = notify;
     this.solution = [];
@@ -32,6 +34,7 @@ export class Playback {
     this.touch();
     this.solution = [];
     this.view.setSolutionLine(null);
+    this.products.clear();
     this.playing = false;
     $('path-box').hidden = true;
   }
@@ -42,6 +45,7 @@ export class Playback {
     if (!path.length) return;
     this.solution = path;
     this.view.setSolutionLine(path);
+    this.products.show(path);
     $('path-box').hidden = false;
     this.notify(`solved: a path of ${path.length} states`, 'ok');
   }

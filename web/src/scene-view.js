@@ -103,8 +103,11 @@ export class SceneView {
     const { dynamicRoot } = this.layers;
     // Transparent obstacles go with the dynamic layer: drawn after everything opaque, as three.js
     // orders them.
+    this.obstacleMeshes = [];
     for (const body of s.obstacles) {
       const m = meshOf(body);
+      m.name = body.name;
+      this.obstacleMeshes.push(m);
       (m.material.transparent ? dynamicRoot : this.layers.obstacles).add(m);
       if (m.material.transparent) this.overlaid.push(m);
     }
@@ -191,8 +194,9 @@ export class SceneView {
     }
   }
 
-  /** The solution's line through its positions (a path of configurations), or none; no ghost. */
-  setSolutionLine(path) {
+  /** The solution's line through its positions (a path of configurations), or none; no ghost.
+   * `coloured`: {points, colours} (solution-products.js) to draw it coloured by clearance. */
+  setSolutionLine(path, coloured = null) {
     const { staticRoot } = this.layers;
     if (this.pathLine) {
       staticRoot.remove(this.pathLine);
@@ -200,12 +204,44 @@ export class SceneView {
       this.pathLine = null;
     }
     if (path) {
-      const g = new THREE.BufferGeometry().setFromPoints(path.map((q) => new THREE.Vector3(q[0], q[1], q[2])));
-      this.pathLine = new THREE.Line(g, new THREE.LineBasicMaterial({ color: 0xfacc15 }));
+      const points = coloured?.points ?? path.map((q) => new THREE.Vector3(q[0], q[1], q[2]));
+      const g = new THREE.BufferGeometry().setFromPoints(points);
+      if (coloured) g.setAttribute('color', new THREE.Float32BufferAttribute(coloured.colours.flatMap((c) => [c.r, c.g, c.b]), 3));
+      this.pathLine = new THREE.Line(g, new THREE.LineBasicMaterial(coloured ? { vertexColors: true } : { color: 0xfacc15 }));
+      this.pathLine.name = coloured ? 'solution-clearance' : 'solution';
       staticRoot.add(this.pathLine);
     }
     this.layers.invalidate();
     this.pathGhost.visible = false;
+  }
+
+  /** The name of the obstacle under a point of the page (CSS pixels), or null. */
+  obstacleAt(clientX, clientY) {
+    const r = this.layers.domElement.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, 1 - ((clientY - r.top) / r.height) * 2);
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(ndc, this.camera);
+    return ray.intersectObjects(this.obstacleMeshes, false)[0]?.object.name ?? null;
+  }
+
+  /** Marks one obstacle (by name) with a glow; null: none. */
+  highlight(name) {
+    for (const m of this.obstacleMeshes) m.material.emissive.setHex(m.name === name ? 0x996600 : 0x000000);
+    this.layers.invalidate();
+  }
+
+  /** The part's motion envelope (a BufferGeometry in the world frame), translucent; null: none. */
+  setEnvelope(geometry) {
+    const { staticRoot } = this.layers;
+    if (this.envelope) staticRoot.remove(this.envelope);
+    this.envelope = null;
+    if (geometry) {
+      this.envelope = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({
+        color: 0xf28c19, transparent: true, opacity: 0.35, depthWrite: false, side: THREE.DoubleSide }));
+      this.envelope.name = 'envelope';
+      staticRoot.add(this.envelope);
+    }
+    this.layers.invalidate();
   }
 
   /** The path's ghost at the fraction f from configuration a to b. */

@@ -74,8 +74,12 @@ export async function launchBrowser() {
 }
 
 /** Opens the viewer of `run` in a new page; `init`: scripts (addInitScript's arguments) that run
- * in the page before its own. */
-export async function openViewer(browser, run, { viewport = { width: 1280, height: 800 }, query = '', init = [] } = {}) {
+ * in the page before its own; `ready`: what the page shows once it is ready (in the page; default:
+ * connected, with a status). */
+export async function openViewer(browser, run, {
+  viewport = { width: 1280, height: 800 }, query = '', init = [],
+  ready = () => window.tandem?.connected && window.tandem.status,
+} = {}) {
   const page = await browser.newPage({ viewport });
   openPages.add(page);
   for (const script of init) await page.addInitScript(script);
@@ -83,7 +87,7 @@ export async function openViewer(browser, run, { viewport = { width: 1280, heigh
   page.on('console', (m) => logs.push(m.text()));
   page.on('pageerror', (e) => logs.push(`page error: ${e.message}`));
   await page.goto(run.url + query);
-  await page.waitForFunction(() => window.tandem?.connected && window.tandem.status, null, { timeout: 20000 });
+  await page.waitForFunction(ready, null, { timeout: 20000 });
   page.logs = logs;
   return page;
 }

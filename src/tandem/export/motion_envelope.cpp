@@ -58,20 +58,31 @@ ObjectMesh object_mesh(const Body& object) {
   return out;
 }
 
-/// The poses along the path, no point of the part moving more than `step` between two of them.
+/// Poses along the path, no point of the part moving more than `step` between two neighbours: at
+/// equal shares of the path's displacement bound (|dt| + angle x radius, summed over the motions),
+/// so a path of many short motions needs no more poses than one long motion.
 std::vector<Config> rasterised_poses(const Path& path, const SE3Space& space, double radius,
                                      double step) {
-  std::vector<Config> poses{path.front()};
+  std::vector<double> along{0.0};  // the displacement bound from the start to each state
   for (std::size_t i = 1; i < path.size(); ++i) {
     const Config &a = path[i - 1], &b = path[i];
-    const double moved = (b.t - a.t).norm() + SE3Space::rotation_angle(a.q, b.q) * radius;
-    const double pieces = std::ceil(moved / step);
-    if (static_cast<double>(poses.size()) + pieces > static_cast<double>(kMaxPoses))
-      throw InputError("--voxel", "too small for this path: the envelope would need more than " +
-                                      std::to_string(kMaxPoses) + " poses of the part");
-    const auto n = static_cast<unsigned>(std::max(1.0, pieces));
-    for (unsigned k = 1; k <= n; ++k)
-      poses.push_back(space.interpolate(a, b, static_cast<double>(k) / n));
+    along.push_back(along.back() + (b.t - a.t).norm() +
+                    SE3Space::rotation_angle(a.q, b.q) * radius);
+  }
+  const double pieces = std::ceil(along.back() / step);
+  if (pieces + 1 > static_cast<double>(kMaxPoses))
+    throw InputError("--voxel", "too small for this path: the envelope would need more than " +
+                                    std::to_string(kMaxPoses) + " poses of the part");
+  const auto n = static_cast<std::size_t>(pieces);
+  std::vector<Config> poses{path.front()};
+  std::size_t i = 1;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const double at = along.back() * static_cast<double>(k) / static_cast<double>(n);
+    while (i + 1 < path.size() && along[i] < at)
+      ++i;
+    const double length = along[i] - along[i - 1];
+    const double s = length > 0 ? std::clamp((at - along[i - 1]) / length, 0.0, 1.0) : 1.0;
+    poses.push_back(space.interpolate(path[i - 1], path[i], s));
   }
   return poses;
 }
@@ -139,7 +150,7 @@ double default_envelope_voxel(const Body& object) {
 }
 
 MotionEnvelope motion_envelope(const Body& object, const Path& path, const SE3Space& space,
-                               double voxel) {
+                               double voxel, const std::stop_token& stop) {
   if (!(voxel > 0.0) || !std::isfinite(voxel))
     throw InputError("--voxel", "must be a positive number, got " + std::to_string(voxel));
   if (path.empty())
@@ -154,6 +165,8 @@ MotionEnvelope motion_envelope(const Body& object, const Path& path, const SE3Sp
   const auto xform = openvdb::math::Transform::createLinearTransform(voxel);
   openvdb::FloatGrid::Ptr swept;
   for (const Config& q : poses) {
+    if (stop.stop_requested())
+      return {{}, voxel, iso + voxel, 0};
     openvdb::FloatGrid::Ptr grid = rasterise(part.mesh, q.pose(), *xform, band);
     if (!swept)
       swept = grid;

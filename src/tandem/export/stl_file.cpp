@@ -15,7 +15,7 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "STL is little-endian");
 
-void put_vector(std::ofstream& out, const Eigen::Vector3d& v) {
+void put_vector(std::ostream& out, const Eigen::Vector3d& v) {
   const std::array<float, 3> f{static_cast<float>(v.x()), static_cast<float>(v.y()),
                                static_cast<float>(v.z())};
   out.write(reinterpret_cast<const char*>(f.data()), sizeof f);
@@ -27,6 +27,12 @@ void write_stl(const TriangleMesh& mesh, const std::string& file, const std::str
   std::ofstream out(file, std::ios::binary);
   if (!out)
     throw InputError(file, "cannot be written");
+  write_stl(mesh, out, header);
+  if (!out.flush())
+    throw InputError(file, "could not be written completely");
+}
+
+void write_stl(const TriangleMesh& mesh, std::ostream& out, const std::string& header) {
   std::array<char, 80> head{};
   std::memcpy(head.data(), header.data(), std::min(header.size(), head.size()));
   out.write(head.data(), head.size());
@@ -43,8 +49,6 @@ void write_stl(const TriangleMesh& mesh, const std::string& file, const std::str
     put_vector(out, c);
     out.write(reinterpret_cast<const char*>(&attribute), sizeof attribute);
   }
-  if (!out.flush())
-    throw InputError(file, "could not be written completely");
 }
 
 }  // namespace tandem

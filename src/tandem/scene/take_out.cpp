@@ -67,4 +67,26 @@ Problem take_out_problem(const std::filesystem::path& file, const TakeOutOptions
                  {},   std::move(region)};
 }
 
+Problem assembly_problem(const std::filesystem::path& file, const TakeOutOptions& options) {
+  const CadAssembly assembly = load_cad(file, options.cad);
+  CadScene cad = cad_scene(assembly, "", file.string(), "--part", 0.0);
+  const auto [lo, hi] = assembly.bounding_box();
+  const double grow = 0.05 * (hi - lo).norm();
+  Bounds bounds;
+  bounds.min = lo.array() - grow;
+  bounds.max = hi.array() + grow;
+  Config centre;
+  centre.t = (lo + hi) / 2;
+  Scene scene{Body{"(no part chosen)", {}, {}}, std::move(cad.obstacles)};
+  return Problem{"choose a part of " + file.stem().string(),
+                 file.string(),
+                 std::move(scene),
+                 SE3Space(SpaceKind::se3, bounds),
+                 centre,
+                 centre,
+                 {},
+                 {},
+                 std::nullopt};
+}
+
 }  // namespace tandem

@@ -31,4 +31,9 @@ struct TakeOutOptions {
 /// Throws InputError naming the file or option and the fault.
 Problem take_out_problem(const std::filesystem::path& file, const TakeOutOptions& options);
 
+/// The whole assembly, for choosing the part to take out (the viewer shows it): every part an
+/// obstacle, an object with no geometry, bounds around the assembly, start and goal at its centre.
+/// `options.part` is ignored. Throws InputError naming the file.
+Problem assembly_problem(const std::filesystem::path& file, const TakeOutOptions& options);
+
 }  // namespace tandem

@@ -139,6 +139,13 @@ ClientMessage parse_client_message(std::string_view text, const InteractionSetti
         m.command != "reset") {
       throw ProtocolError("command must be pause, resume, step or reset");
     }
+  } else if (type == "take_out") {
+    m.kind = ClientMessage::Kind::take_out;
+    if (!j.contains("part") || !j["part"].is_string())
+      throw ProtocolError("take_out needs a part (its path in the assembly tree)");
+    m.part = j["part"].get<std::string>();
+    if (m.part.empty() || m.part.size() > 1024)
+      throw ProtocolError("take_out's part must be 1 to 1024 bytes");
   } else {
     throw ProtocolError("unknown message type '" + type.substr(0, 40) + "'");
   }

@@ -15,6 +15,8 @@
 //   {"type":"params", NAME: value, ...}   live tunables of interaction_parameters(), each within
 //                                        its declared range (the hello announces them)
 //   {"type":"command","command":"pause|resume|step|reset"}
+//   {"type":"take_out","part":"a/b/c"}   choosing an assembly's part to take out (a path in its
+//                                        tree, 1 to 1024 bytes; only while choosing one)
 // Anything else, or a value out of range, is refused with a ProtocolError naming the fault.
 
 #include <cstdint>
@@ -38,12 +40,13 @@ class ProtocolError : public std::runtime_error {
 };
 
 struct ClientMessage {
-  enum class Kind : std::uint8_t { pose, input, params, command } kind = Kind::pose;
+  enum class Kind : std::uint8_t { pose, input, params, command, take_out } kind = Kind::pose;
   Config q;                                      ///< pose: finite, unit quaternion (normalised)
   std::uint64_t id = 0;                          ///< pose: the event's id
   OperatorInput input = OperatorInput::browser;  ///< input
   InteractionSettings settings;  ///< params: `current` with the message's fields applied
   std::string command;           ///< command: pause, resume, step or reset
+  std::string part;              ///< take_out: the part's path in the assembly tree
 };
 
 /// Parses and validates a message. `current` is what a "params" message changes. Throws

@@ -74,6 +74,17 @@ http::response<http::string_body> Routes::respond(
   }
   if (path == "/api/session")
     return session_journal(req, std::move(res));
+  if (path == "/api/clearance")
+    return product(req, std::move(res), SolutionProduct::clearance_json, "application/json", "");
+  if (path == "/api/animation.glb")
+    return product(req, std::move(res), SolutionProduct::animation_glb, "model/gltf-binary",
+                   "tandem-path.glb");
+  if (path == "/api/animation.html")
+    return product(req, std::move(res), SolutionProduct::animation_html, "text/html; charset=utf-8",
+                   "tandem-path.html");
+  if (path == "/api/envelope.stl")
+    return product(req, std::move(res), SolutionProduct::envelope_stl, "model/stl",
+                   "tandem-envelope.stl");
   return static_file(req, path == "/" ? "/index.html" : path, std::move(res));
 }
 
@@ -87,6 +98,24 @@ Routes::Response Routes::session_journal(const http::request<http::string_body>&
   res.set(http::field::content_disposition,
           "attachment; filename=\"" + journal->filename().string() + "\"");
   return finish(req, std::move(res), http::status::ok, "application/x-ndjson", std::move(*text));
+}
+
+Routes::Response Routes::product(const http::request<http::string_body>& req, Response res,
+                                 SolutionProduct which, std::string_view type,
+                                 std::string_view download) const {
+  auto bytes = products_.get(which);
+  if (!bytes) {
+    const std::string why = products_.missing(which);
+    if (why == "computing")
+      res.set(http::field::retry_after, "1");
+    return finish(req, std::move(res),
+                  why == "computing" ? http::status::service_unavailable : http::status::not_found,
+                  "text/plain", why + "\n");
+  }
+  if (!download.empty())
+    res.set(http::field::content_disposition,
+            "attachment; filename=\"" + std::string(download) + "\"");
+  return finish(req, std::move(res), http::status::ok, type, std::move(*bytes));
 }
 
 Routes::Response Routes::static_file(const http::request<http::string_body>& req,

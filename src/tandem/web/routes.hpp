@@ -5,6 +5,11 @@
 //   /api/scene     the scene, as JSON
 //   /api/path      the solution, as a path file (404 until there is one)
 //   /api/session   the session's journal (404 without one)
+//   /api/clearance       the solution's clearance, as JSON (tandem clearance --json's form)
+//   /api/animation.glb   the solution as an animated glTF binary (tandem export --glb)
+//   /api/animation.html  its offline page (tandem export --html)
+//   /api/envelope.stl    the part's motion envelope along the solution (asking starts it)
+//   (each: 404 with no solution, 503 with a Retry-After while it is computed)
 // GET and HEAD only.
 
 #include <filesystem>
@@ -12,6 +17,7 @@
 #include <string_view>
 
 #include "tandem/web/server_io.hpp"
+#include "tandem/web/solution_products.hpp"
 #include "tandem/web/viewer_server.hpp"
 
 namespace tandem::viewer {
@@ -23,10 +29,11 @@ std::string_view mime_type(const std::filesystem::path& file);
 /// and asks the control for its journal).
 class Routes {
  public:
-  Routes(ViewerState& state, ViewerControl& control, std::filesystem::path web_root,
-         std::string token)
+  Routes(ViewerState& state, ViewerControl& control, const SolutionProducts& products,
+         std::filesystem::path web_root, std::string token)
       : state_(state),
         control_(control),
+        products_(products),
         web_root_(std::move(web_root)),
         token_(std::move(token)) {}
 
@@ -38,9 +45,13 @@ class Routes {
   Response static_file(const http::request<http::string_body>& req, const std::string& path,
                        Response res) const;
   Response session_journal(const http::request<http::string_body>& req, Response res) const;
+  /// One of the solution's products, as a download named `download` (none: shown in the page).
+  Response product(const http::request<http::string_body>& req, Response res,
+                   SolutionProduct product, std::string_view type, std::string_view download) const;
 
   ViewerState& state_;
   ViewerControl& control_;
+  const SolutionProducts& products_;
   std::filesystem::path web_root_;
   std::string token_;
 };

@@ -101,7 +101,8 @@ class ViewerServer::Impl {
         acceptor_(open_acceptor(ioc_, options)),
         port_(acceptor_.local_endpoint().port()),
         policy_(options.token.empty() ? random_token() : options.token, options.host, port_),
-        routes_(state, control, options.web_root, policy_.token()),
+        products_(state, options.web_root),
+        routes_(state, control, products_, options.web_root, policy_.token()),
         hub_(state, control),
         tick_(ioc_) {
     accept();
@@ -133,6 +134,7 @@ class ViewerServer::Impl {
   tcp::acceptor acceptor_;
   unsigned short port_ = 0;
   AccessPolicy policy_;
+  SolutionProducts products_;  ///< before the routes, which answer from it
   Routes routes_;
   SocketHub hub_;  ///< server thread only, but for its counters
   net::steady_timer tick_;

@@ -88,6 +88,11 @@ std::optional<std::string> ViewerState::path_text() const {
   return format_path(solution_, problem_.space);
 }
 
+std::pair<std::uint64_t, std::vector<Config>> ViewerState::solution() const {
+  const std::lock_guard lock(mutex_);
+  return {solution_seq_, solution_};
+}
+
 std::vector<Frame> ViewerState::pending(Cursor& cursor, std::size_t max_nodes) const {
   std::vector<Frame> frames;
   const std::lock_guard lock(mutex_);

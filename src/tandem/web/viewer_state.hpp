@@ -15,6 +15,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tandem/session/live_session.hpp"
@@ -53,6 +54,9 @@ class ViewerState final : public LiveObserver {
   const std::string& scene_json() const { return scene_; }
   /// The solution in OMPL's path format, if there is one.
   std::optional<std::string> path_text() const;
+  /// The solution (empty if none) and its number, which changes whenever the solution does.
+  std::pair<std::uint64_t, std::vector<Config>> solution() const;
+  const Problem& problem() const { return problem_; }
   std::size_t node_count() const;
 
  private:
