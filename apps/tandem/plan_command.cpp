@@ -10,6 +10,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "plan_run.hpp"
 #include "run_options.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/stopwatch.hpp"
@@ -50,32 +51,6 @@ void require_writable(const std::string& file) {
   }
 }
 
-/// The path as written: simplified (unless asked not to), checked as it reads back from its file.
-struct PlannedPath {
-  Path path;
-  double simplify_time_s = 0.0;
-};
-
-PlannedPath finish_path(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
-                        const RunOutcome& run, MotionValidator& validator) {
-  PlannedPath out{run.path};
-  if (!args.no_simplify) {
-    const Stopwatch watch;
-    Rng rng(spec.settings.seed ^ 0x9e3779b97f4a7c15ULL);
-    out.path = simplify_path(std::move(out.path), validator, rng);
-    out.simplify_time_s = watch.seconds();
-  }
-  if (problem.goal_region)
-    out.path = cut_at_goal_region(out.path, *problem.goal_region, problem.space);
-  out.path = parse_path(format_path(out.path, problem.space), problem.space, "the planned path");
-  const PathCheck check = check_path(out.path, validator);
-  if (!check.valid)
-    throw std::logic_error("the planned path failed its own check: " + check.describe());
-  if (!args.out.empty())
-    write_path_file(args.out, out.path, problem.space);
-  return out;
-}
-
 /// The tunables the planner read, at top level, with the scene-scaled values resolved.
 void add_settings(nlohmann::json& j, const std::map<std::string, ParamValue>& tunables,
                   const Problem& problem, const RunSpec& spec, const RunOutcome& run) {
@@ -91,8 +66,9 @@ void add_settings(nlohmann::json& j, const std::map<std::string, ParamValue>& tu
     j["sigma"] = sigma_translation(i, problem.space);
 }
 
-nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
-                         const RunOutcome& run, const PlannedPath& planned) {
+nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const PlanRun& planned) {
+  const RunSpec& spec = planned.spec;
+  const RunOutcome& run = planned.run;
   const bool solved = run.status == PlannerStatus::solved;
   const std::map<std::string, ParamValue> tunables = used_tunables(spec);
   nlohmann::json j = record_json(make_record(problem.name, spec.mode, tunables, spec.settings.seed,
@@ -116,8 +92,9 @@ nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const Run
   return j;
 }
 
-void print_summary(const PlanArgs& args, const Problem& problem, const RunSpec& spec,
-                   const RunOutcome& run, const PlannedPath& planned) {
+void print_summary(const PlanArgs& args, const Problem& problem, const PlanRun& planned) {
+  const RunSpec& spec = planned.spec;
+  const RunOutcome& run = planned.run;
   const PlannerStats& stats = run.stats;
   const bool solved = run.status == PlannerStatus::solved;
   std::cout << problem.name << ": "
@@ -154,25 +131,16 @@ int run_plan(const PlanArgs& args) {
   require_writable(args.out);
   require_writable(args.svg);
   const Problem problem = load_problem(args.run.problem);
-  RunSpec spec = make_spec(args.run, problem);
-  // Shown resolved: --threads 0 (the default) is one per core.
-  if (!uses_operator(spec))
-    spec.settings.threads = resolve_threads(spec);
-
-  CollisionChecker checker(problem.scene);
-  require_valid_endpoints(problem, checker, validation_settings(spec.settings));
-  const RunOutcome run = execute_run(problem, spec, checker);
-  const bool solved = run.status == PlannerStatus::solved;
-  // The path is simplified and checked the way the planner checked its motions.
-  MotionValidator validator(problem.space, checker, validation_settings(spec.settings));
-  const PlannedPath planned =
-      solved ? finish_path(args, problem, spec, run, validator) : PlannedPath{};
+  const PlanRun planned = plan_run(problem, args.run, !args.no_simplify);
+  const bool solved = planned.run.status == PlannerStatus::solved;
+  if (solved && !args.out.empty())
+    write_path_file(args.out, planned.path, problem.space);
   if (!args.svg.empty())
     write_file_atomically(args.svg, render_svg(problem, planned.path));
   if (args.json)
-    std::cout << plan_json(args, problem, spec, run, planned).dump() << '\n';
+    std::cout << plan_json(args, problem, planned).dump() << '\n';
   else
-    print_summary(args, problem, spec, run, planned);
+    print_summary(args, problem, planned);
   return solved ? 0 : 1;
 }
 

@@ -1,0 +1,91 @@
+#include "conversions.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "tandem/core/error.hpp"
+#include "tandem/io/path_file.hpp"
+
+namespace tandem::python {
+
+py::object to_python(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+std::size_t config_columns(const SE3Space& space) {
+  return space.planar() ? 3 : 7;
+}
+
+py::array_t<double> path_array(const Path& path, const SE3Space& space) {
+  const std::size_t cols = config_columns(space);
+  py::array_t<double> out({path.size(), cols});
+  auto m = out.mutable_unchecked<2>();
+  std::istringstream text(format_path(path, space));
+  for (py::ssize_t i = 0; i < m.shape(0); ++i)
+    for (py::ssize_t k = 0; k < m.shape(1); ++k)
+      text >> m(i, k);
+  return out;
+}
+
+namespace {
+
+/// The rows' count and columns; throws when the shape is not (cols,) or (n, cols).
+py::ssize_t row_count(const py::array& rows, py::ssize_t cols, const std::string& what) {
+  const bool one = rows.ndim() == 1;
+  if (!((one && rows.shape(0) == cols) || (rows.ndim() == 2 && rows.shape(1) == cols)))
+    throw InputError(what, "must be an array of shape (" + std::to_string(cols) + ",) or (n, " +
+                               std::to_string(cols) + ")");
+  return one ? 1 : rows.shape(0);
+}
+
+Config config_of(const double* v, bool planar, const std::string& where) {
+  for (int k = 0; k < (planar ? 3 : 7); ++k)
+    if (!std::isfinite(v[k]))
+      throw InputError(where, "has a number that is not finite");
+  Config q;
+  if (planar) {
+    q.t = {v[0], v[1], 0.0};
+    q.q = Eigen::Quaterniond(Eigen::AngleAxisd(v[2], Eigen::Vector3d::UnitZ()));
+    return q;
+  }
+  q.t = {v[0], v[1], v[2]};
+  q.q = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
+  const double norm = q.q.norm();
+  if (!(norm > 1e-12))
+    throw InputError(where, "has a zero quaternion");
+  q.q.coeffs() /= norm;
+  return q;
+}
+
+}  // namespace
+
+std::vector<Config> configs_of(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& rows,
+    const SE3Space& space, const std::string& what) {
+  const auto cols = static_cast<py::ssize_t>(config_columns(space));
+  const py::ssize_t n = row_count(rows, cols, what);
+  std::vector<Config> out;
+  out.reserve(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i)
+    out.push_back(
+        config_of(rows.data() + i * cols, space.planar(), what + ", row " + std::to_string(i)));
+  return out;
+}
+
+Path path_of(const py::array_t<double, py::array::c_style | py::array::forcecast>& rows,
+             const SE3Space& space, const std::string& what) {
+  const auto cols = static_cast<py::ssize_t>(config_columns(space));
+  const py::ssize_t n = row_count(rows, cols, what);
+  const double* data = rows.data();
+  std::ostringstream text;
+  text << std::setprecision(17);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    for (py::ssize_t k = 0; k < cols; ++k)
+      text << (k ? " " : "") << data[i * cols + k];
+    text << '\n';
+  }
+  return parse_path(text.str(), space, what);
+}
+
+}  // namespace tandem::python
