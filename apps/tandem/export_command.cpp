@@ -40,10 +40,11 @@ void write_file(const std::string& file, const std::string& bytes) {
 
 /// The built player script (scripts/build-web), from the viewer's web root.
 std::string player_script() {
-  const std::filesystem::path file = default_web_root() / "player" / "player.js";
-  if (!std::filesystem::exists(file))
-    throw InputError(file.string(), "the animation player is not built (run scripts/build-web)");
-  return read_text_file(file);
+  std::optional<std::string> script = read_player_script(default_web_root());
+  if (!script)
+    throw InputError((default_web_root() / "player" / "player.js").string(),
+                     "the animation player is not built (run scripts/build-web)");
+  return std::move(*script);
 }
 
 MotionEnvelope envelope_of(const Problem& problem, const Path& path, double voxel) {

@@ -42,16 +42,9 @@ struct ObjectMesh {
 };
 
 ObjectMesh object_mesh(const Body& object) {
-  ObjectMesh out;
-  for (const Part& part : object.parts) {
-    const TriangleMesh m = tessellate(part.geometry, kSegments);
-    const auto base = static_cast<std::uint32_t>(out.mesh.vertices.size());
-    for (const Eigen::Vector3d& v : m.vertices)
-      out.mesh.vertices.push_back(part.pose * v);
-    for (const auto& t : m.triangles)
-      out.mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  ObjectMesh out{body_mesh(object, kSegments)};
+  for (const Part& part : object.parts)
     out.gap = std::max(out.gap, tessellation_gap(part.geometry));
-  }
   for (const Eigen::Vector3d& v : out.mesh.vertices)
     out.radius = std::max(out.radius, v.norm());
   out.radius += out.gap;
@@ -99,19 +92,26 @@ void check_extent(const std::vector<Config>& poses, double radius, double voxel)
                                     " voxels across");
 }
 
+/// The mesh's triangles as OpenVDB takes them (the same at every pose).
+std::vector<openvdb::Vec3I> vdb_triangles(const TriangleMesh& mesh) {
+  std::vector<openvdb::Vec3I> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    triangles.emplace_back(t[0], t[1], t[2]);
+  return triangles;
+}
+
 /// The part at pose X as a narrow-band level set (exact distances; `band` voxels outside).
-openvdb::FloatGrid::Ptr rasterise(const TriangleMesh& mesh, const Eigen::Isometry3d& X,
-                                  const openvdb::math::Transform& xform, float band) {
+openvdb::FloatGrid::Ptr rasterise(const TriangleMesh& mesh,
+                                  const std::vector<openvdb::Vec3I>& triangles,
+                                  const Eigen::Isometry3d& X, const openvdb::math::Transform& xform,
+                                  float band) {
   std::vector<openvdb::Vec3s> points;
   points.reserve(mesh.vertices.size());
   for (const Eigen::Vector3d& v : mesh.vertices) {
     const Eigen::Vector3d w = X * v;
     points.emplace_back(xform.worldToIndex(openvdb::Vec3d(w.x(), w.y(), w.z())));
   }
-  std::vector<openvdb::Vec3I> triangles;
-  triangles.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    triangles.emplace_back(t[0], t[1], t[2]);
   const openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(
       points, triangles);
   return openvdb::tools::meshToVolume<openvdb::FloatGrid>(adapter, xform, band, 2.0f,
@@ -163,11 +163,12 @@ MotionEnvelope motion_envelope(const Body& object, const Path& path, const SE3Sp
   const double iso = voxel / 2 + std::numbers::sqrt3 * voxel + part.gap;
   const auto band = static_cast<float>(std::ceil(iso / voxel) + 2);
   const auto xform = openvdb::math::Transform::createLinearTransform(voxel);
+  const std::vector<openvdb::Vec3I> triangles = vdb_triangles(part.mesh);
   openvdb::FloatGrid::Ptr swept;
   for (const Config& q : poses) {
     if (stop.stop_requested())
       return {{}, voxel, iso + voxel, 0};
-    openvdb::FloatGrid::Ptr grid = rasterise(part.mesh, q.pose(), *xform, band);
+    openvdb::FloatGrid::Ptr grid = rasterise(part.mesh, triangles, q.pose(), *xform, band);
     if (!swept)
       swept = grid;
     else

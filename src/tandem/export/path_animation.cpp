@@ -66,20 +66,6 @@ class GlbBuilder {
   tinygltf::Model model_;
 };
 
-/// A body's parts as one mesh in its own frame.
-TriangleMesh body_mesh(const Body& body) {
-  TriangleMesh out;
-  for (const Part& part : body.parts) {
-    const TriangleMesh m = tessellate(part.geometry, kSegments);
-    const auto base = static_cast<std::uint32_t>(out.vertices.size());
-    for (const Eigen::Vector3d& v : m.vertices)
-      out.vertices.push_back(part.pose * v);
-    for (const auto& t : m.triangles)
-      out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  }
-  return out;
-}
-
 int add_material(tinygltf::Model& model, const std::string& name, const Color& c) {
   tinygltf::Material m;
   m.name = name;
@@ -172,7 +158,7 @@ void add_path_animation(GlbBuilder& glb, int object, const Path& path,
 
 /// The object's node, posed at the first state (what a viewer shows without the animation).
 int add_object(GlbBuilder& glb, const Body& object, const Config& start) {
-  const int node = add_mesh_node(glb, "object", body_mesh(object), object.color);
+  const int node = add_mesh_node(glb, "object", body_mesh(object, kSegments), object.color);
   if (node < 0)
     throw InputError("scene", "the moving object has no geometry to export");
   tinygltf::Node& n = glb.model().nodes.at(static_cast<std::size_t>(node));
@@ -225,7 +211,8 @@ std::string path_animation_glb(const Scene& scene, const Path& path, const SE3Sp
   root.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};  // z up -> glTF's y up
   std::vector<int> children;
   for (const Body& body : scene.obstacles)
-    if (const int node = add_mesh_node(glb, body.name, body_mesh(body), body.color); node >= 0)
+    if (const int node = add_mesh_node(glb, body.name, body_mesh(body, kSegments), body.color);
+        node >= 0)
       children.push_back(node);
   const int object = add_object(glb, scene.object, path.front());
   children.push_back(object);

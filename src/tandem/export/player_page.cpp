@@ -1,6 +1,8 @@
 #include "tandem/export/player_page.hpp"
 
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 
 namespace tandem {
 namespace {
@@ -54,6 +56,15 @@ button { min-width: 64px; }
 )";
 
 }  // namespace
+
+std::optional<std::string> read_player_script(const std::filesystem::path& web_root) {
+  std::ifstream in(web_root / "player" / "player.js", std::ios::binary);
+  if (!in)
+    return std::nullopt;
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 std::string base64(const std::string& bytes) {
   static constexpr char kDigits[] =

@@ -90,6 +90,19 @@ TriangleMesh tessellate(const Geometry& geometry, int segments) {
   return std::visit(Visitor{std::max(segments, 3)}, geometry);
 }
 
+TriangleMesh body_mesh(const Body& body, int segments) {
+  TriangleMesh out;
+  for (const Part& part : body.parts) {
+    const TriangleMesh m = tessellate(part.geometry, segments);
+    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+    for (const Eigen::Vector3d& v : m.vertices)
+      out.vertices.push_back(part.pose * v);
+    for (const auto& t : m.triangles)
+      out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return out;
+}
+
 const char* geometry_kind(const Geometry& geometry) {
   static constexpr const char* kNames[] = {"box", "sphere", "cylinder", "mesh"};
   return kNames[geometry.index()];

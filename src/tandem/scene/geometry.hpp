@@ -52,6 +52,10 @@ struct Body {
 /// circle.
 TriangleMesh tessellate(const Geometry& geometry, int segments = 24);
 
+/// A body's parts tessellated (as tessellate() does) into one mesh in the body's frame, each part
+/// posed by its X_BP.
+TriangleMesh body_mesh(const Body& body, int segments = 24);
+
 /// Name of the geometry's kind ("box", "sphere", "cylinder", "mesh").
 const char* geometry_kind(const Geometry& geometry);
 

@@ -75,20 +75,13 @@ void append(std::string& out, const T* data, std::size_t n) {
 
 json body_json(const Body& body) {
   json positions = json::array(), indices = json::array();
-  std::uint32_t base = 0;
-  for (const Part& part : body.parts) {
-    const TriangleMesh mesh = tessellate(part.geometry);
-    for (const Eigen::Vector3d& v : mesh.vertices) {
-      const Eigen::Vector3d p = part.pose * v;
-      for (int k = 0; k < 3; ++k)
-        positions.push_back(static_cast<float>(p[k]));
-    }
-    for (const auto& t : mesh.triangles) {
-      for (std::uint32_t i : t)
-        indices.push_back(base + i);
-    }
-    base += static_cast<std::uint32_t>(mesh.vertices.size());
-  }
+  const TriangleMesh mesh = body_mesh(body);
+  for (const Eigen::Vector3d& p : mesh.vertices)
+    for (int k = 0; k < 3; ++k)
+      positions.push_back(static_cast<float>(p[k]));
+  for (const auto& t : mesh.triangles)
+    for (std::uint32_t i : t)
+      indices.push_back(i);
   return json{{"name", body.name},
               {"color", {body.color.r, body.color.g, body.color.b, body.color.a}},
               {"positions", std::move(positions)},

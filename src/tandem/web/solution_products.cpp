@@ -1,7 +1,6 @@
 #include "tandem/web/solution_products.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <sstream>
 
 #include "tandem/core/error.hpp"
@@ -15,15 +14,6 @@ namespace tandem {
 namespace {
 
 constexpr auto kPoll = std::chrono::milliseconds(100);
-
-std::optional<std::string> read_player(const std::filesystem::path& web_root) {
-  std::ifstream in(web_root / "player" / "player.js", std::ios::binary);
-  if (!in)
-    return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -52,7 +42,7 @@ std::string SolutionProducts::missing(SolutionProduct product) const {
     return "no solution yet";
   if (!error_.empty())
     return error_;
-  if (product == SolutionProduct::animation_html && !read_player(web_root_))
+  if (product == SolutionProduct::animation_html && no_player_)
     return "the animation player is not built (run scripts/build-web)";
   return "computing";
 }
@@ -80,12 +70,19 @@ bool SolutionProducts::envelope_due() const {
 }
 
 void SolutionProducts::run(std::stop_token stop) {
+  player_ = read_player_script(web_root_);
+  {
+    const std::lock_guard lock(mutex_);
+    no_player_ = !player_;
+  }
   std::uint64_t done = 0;
   while (!stop.stop_requested()) {
     const auto [seq, path] = state_.solution();
     try {
-      if (seq != done && start(done = seq, !path.empty()))
+      if (seq != done && start(done = seq, !path.empty())) {
+        clearance(seq, path);
         animate(seq, path, nullptr);
+      }
       if (envelope_due())
         envelope(seq, path, stop);
     } catch (const std::exception& e) {
@@ -96,21 +93,23 @@ void SolutionProducts::run(std::stop_token stop) {
   }
 }
 
+void SolutionProducts::clearance(std::uint64_t seq, const Path& path) {
+  const Problem& problem = state_.problem();
+  CollisionChecker checker(problem.scene);
+  const PathClearance c =
+      path_clearance(path, checker, problem.space, 0.01, 1e-9 * problem.space.max_extent());
+  put(seq, SolutionProduct::clearance_json, clearance_json(c, checker).dump());
+}
+
 void SolutionProducts::animate(std::uint64_t seq, const Path& path, const TriangleMesh* envelope) {
   const Problem& problem = state_.problem();
-  if (envelope == nullptr) {
-    CollisionChecker checker(problem.scene);
-    const PathClearance c =
-        path_clearance(path, checker, problem.space, 0.01, 1e-9 * problem.space.max_extent());
-    put(seq, SolutionProduct::clearance_json, clearance_json(c, checker).dump());
-  }
   AnimationOptions options;
   options.title = "tandem: " + problem.name;
   options.envelope = envelope;
   const std::string glb = path_animation_glb(problem.scene, path, problem.space, options);
   put(seq, SolutionProduct::animation_glb, glb);
-  if (const std::optional<std::string> player = read_player(web_root_))
-    put(seq, SolutionProduct::animation_html, player_page(glb, *player, options.title));
+  if (player_)
+    put(seq, SolutionProduct::animation_html, player_page(glb, *player_, options.title));
 }
 
 void SolutionProducts::envelope(std::uint64_t seq, const Path& path, const std::stop_token& stop) {

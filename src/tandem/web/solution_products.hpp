@@ -41,7 +41,8 @@ class SolutionProducts {
   /// Drops the products of the previous solution; true if there is a solution now.
   bool start(std::uint64_t seq, bool has_solution);
   bool envelope_due() const;
-  /// The clearance (unless `envelope` is given), the animation and its page.
+  void clearance(std::uint64_t seq, const Path& path);
+  /// The animation (with the envelope, if given) and its page.
   void animate(std::uint64_t seq, const Path& path, const TriangleMesh* envelope);
   void envelope(std::uint64_t seq, const Path& path, const std::stop_token& stop);
   /// Stores a product of solution `seq` unless the solution has changed since.
@@ -55,6 +56,8 @@ class SolutionProducts {
   std::map<SolutionProduct, std::string> products_;
   std::string error_;
   mutable bool envelope_wanted_ = false;
+  bool no_player_ = false;             ///< the player is not built: no page
+  std::optional<std::string> player_;  ///< the worker's: read once, when it starts
   std::jthread worker_;
 };
 
