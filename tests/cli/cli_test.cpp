@@ -349,6 +349,46 @@ mode = ["birrt", "interactive"]
       {"runs.jsonl", "run the experiment first"});
 }
 
+TEST(Cli, BenchShardsMergeIntoTheReportOfOneRun) {
+  TempDir dir;
+  dir.write("g.toml", std::string(kWallScenario) + kGuide);
+  const auto experiment = dir.write("x.toml", R"(name = "x"
+problem = "g.toml"
+seeds = 2
+time_limit = 20
+[[sweep]]
+mode = ["birrt", "interactive"]
+)")
+                              .string();
+  const auto out = (dir.path() / "out").string();
+  const test::RunResult one = run_tandem({"bench", experiment, "--out", out, "--shard", "1/2"});
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_THAT(one.out, HasSubstr("shard 1/2: 2 of 2 runs recorded (2 now, 0 before)"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / "shards" / "shard-1-of-2.jsonl"));
+  const test::RunResult partial =
+      run_tandem({"bench", experiment, "--out", out, "--merge", "--tasks", "2"});
+  EXPECT_EQ(partial.exit_code, 1);
+  EXPECT_THAT(partial.out, HasSubstr("2 of 4 runs are missing"));
+  EXPECT_THAT(partial.out, HasSubstr("shards with runs missing: 2 of 2"));
+  ASSERT_EQ(run_tandem({"bench", experiment, "--out", out, "--shard", "2/2"}).exit_code, 0);
+  const test::RunResult merged = run_tandem({"bench", experiment, "--out", out, "--merge"});
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_THAT(merged.out, HasSubstr("4 runs recorded (from 2 shard files), 4 solved, 4 solutions "
+                                    "valid"));
+  for (const char* f : {"runs.jsonl", "ompl.log", "report.md"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / f)) << f;
+
+  expect_bad_input({"bench", experiment, "--shard", "3/2"}, {"--shard", "K/N", "3/2"});
+  expect_bad_input({"bench", experiment, "--shard", "1/2", "--merge"}, {"--shard", "--merge"});
+  expect_bad_input({"bench", experiment, "--partition", "p"}, {"--partition", "--slurm"});
+  expect_bad_input({"bench", experiment, "--out", (dir.path() / "a b").string(), "--slurm"},
+                   {"--out", "without blanks"});
+  // No Slurm here, or one without this partition: refused before any run, naming --slurm.
+  expect_bad_input({"bench", experiment, "--out", (dir.path() / "s").string(), "--slurm",
+                    "--partition", "tandem-test-no-such-partition"},
+                   {"--slurm", "sbatch"});
+}
+
 TEST(Cli, BuiltinScenesCanBeListedAndExported) {
   const test::RunResult list = run_tandem({"scenes"});
   EXPECT_EQ(list.exit_code, 0);

@@ -21,7 +21,6 @@
 namespace tandem {
 namespace {
 
-constexpr const char* kRunsFile = "runs.jsonl";
 /// The cores a live session uses (the operator's thread and the planner's), which a run in human
 /// time gets, and a planner alone with it.
 constexpr unsigned kHumanTimeCores = 2;
@@ -113,36 +112,9 @@ class Recorder {
   Stopwatch watch_;
 };
 
-/// Keeps the complete lines of a runs file and rewrites it without a torn last line, so that
-/// appending goes on from a clean end.
-std::vector<RunRecord> load_and_repair(const std::filesystem::path& file, std::ostream* log) {
-  std::vector<RunRecord> records;
-  if (!std::filesystem::exists(file))
-    return records;
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(file.string(), "cannot be read");
-  std::string line;
-  std::size_t bad = 0;
-  std::ostringstream kept;
-  while (std::getline(in, line)) {
-    if (line.empty())
-      continue;
-    if (auto r = parse_record(line)) {
-      records.push_back(std::move(*r));
-      kept << line << '\n';
-    } else {
-      ++bad;
-    }
-  }
-  if (bad > 0) {
-    write_file_atomically(file, kept.str());
-    if (log != nullptr) {
-      *log << file.string() << ": dropped " << bad
-           << " incomplete line(s) (a run cut short); they will run again\n";
-    }
-  }
-  return records;
+/// Where the runs of this invocation go: OUT/runs.jsonl, or the shard's file.
+std::filesystem::path runs_file(const BenchOptions& options) {
+  return options.shard ? shard_file(options.out_dir, *options.shard) : options.out_dir / kRunsFile;
 }
 
 OperatorClock operator_clock(const Experiment& experiment) {
@@ -164,52 +136,39 @@ void check_runnable(const Experiment& experiment, const Problem& problem) {
   }
 }
 
-/// Creates the output folder and reads the runs already in its runs file (OUT/runs.jsonl), which
-/// must be of this problem and time limit.
-std::vector<RunRecord> open_output(const std::filesystem::path& out_dir, const Problem& problem,
-                                   const Experiment& experiment, std::ostream* log) {
-  const double time_limit = experiment.time_limit;
+/// Creates the output folder (and its shards folder) and reads the runs already done: those of
+/// OUT/runs.jsonl and, for a shard, those of its own file.
+std::map<std::string, RunRecord> open_output(const Experiment& experiment, const Problem& problem,
+                                             const BenchOptions& options) {
+  const std::filesystem::path& out_dir = options.out_dir;
+  const std::filesystem::path file = runs_file(options);
   std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec || !std::filesystem::is_directory(out_dir))
-    throw InputError(out_dir.string(), "cannot be created as a folder");
-  const std::filesystem::path runs_file = out_dir / kRunsFile;
-  std::vector<RunRecord> previous = load_and_repair(runs_file, log);
-  for (const RunRecord& r : previous) {
-    if (r.problem != problem.name || r.time_limit_s != time_limit || r.clock != experiment.clock) {
-      std::ostringstream msg;
-      msg << "holds runs of problem '" << r.problem << "' with a time limit of " << r.time_limit_s
-          << " s in " << r.clock << " time; this experiment runs '" << problem.name << "' with "
-          << time_limit << " s in " << experiment.clock
-          << " time. Use another --out folder, or delete this one to start again";
-      throw InputError(runs_file.string(), msg.str());
-    }
-  }
-  return previous;
-}
-
-/// Records by key (configuration and seed); a later record of a key replaces an earlier one.
-void index_records(std::vector<RunRecord>&& records, std::map<std::string, RunRecord>& done) {
-  for (RunRecord& r : records) {
-    std::string key = r.key();
-    done.insert_or_assign(std::move(key), std::move(r));
-  }
+  std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec || !std::filesystem::is_directory(file.parent_path()))
+    throw InputError(file.parent_path().string(), "cannot be created as a folder");
+  std::map<std::string, RunRecord> done;
+  // A shard only reads the whole experiment's file, which other shards may read at the same time.
+  index_records(
+      load_runs_file(out_dir / kRunsFile, problem, experiment, !options.shard, options.progress),
+      done);
+  if (options.shard)
+    index_records(load_runs_file(file, problem, experiment, true, options.progress), done);
+  return done;
 }
 
 /// The runs not done yet, seed-major: an interrupted experiment has every configuration for its
-/// first seeds. Counts the planned and the resumed runs into `result`.
-std::vector<Job> plan_jobs(const Experiment& experiment, std::uint64_t seeds,
+/// first seeds. Counts the planned and the resumed runs into `result` (a shard's only).
+std::vector<Job> plan_jobs(const std::vector<PlannedRun>& runs, const BenchOptions& options,
                            const std::map<std::string, RunRecord>& done, BenchResult& result) {
   std::vector<Job> jobs;
-  for (std::uint64_t s = 0; s < seeds; ++s) {
-    for (std::size_t c = 0; c < experiment.configs.size(); ++c) {
-      const std::uint64_t seed = experiment.seed_start + s;
-      ++result.planned;
-      if (done.count(experiment.configs[c].label() + " #" + std::to_string(seed)) != 0) {
-        ++result.resumed;
-      } else {
-        jobs.push_back({c, seed});
-      }
+  for (std::size_t p = 0; p < runs.size(); ++p) {
+    if (options.shard && shard_of(p, options.shard->count) != options.shard->index)
+      continue;
+    ++result.planned;
+    if (done.count(runs[p].key) != 0) {
+      ++result.resumed;
+    } else {
+      jobs.push_back({runs[p].config, runs[p].seed});
     }
   }
   return jobs;
@@ -311,20 +270,6 @@ class JobQueue {
   std::atomic<bool> stop_all_{false};
 };
 
-/// The experiment's recorded runs, in configuration order, then seed order.
-std::vector<RunRecord> ordered_records(const Experiment& experiment, std::uint64_t seeds,
-                                       const std::map<std::string, RunRecord>& done) {
-  std::vector<RunRecord> records;
-  for (const RunConfig& c : experiment.configs) {
-    for (std::uint64_t s = 0; s < seeds; ++s) {
-      auto it = done.find(c.label() + " #" + std::to_string(experiment.seed_start + s));
-      if (it != done.end())
-        records.push_back(it->second);
-    }
-  }
-  return records;
-}
-
 }  // namespace
 
 std::vector<RunRecord> read_records(const std::filesystem::path& runs_file) {
@@ -345,15 +290,15 @@ BenchResult run_experiment(const Experiment& experiment, const Problem& problem,
   const Stopwatch wall;
   const std::uint64_t seeds = options.seeds.value_or(experiment.seeds);
   check_runnable(experiment, problem);
-  const std::filesystem::path runs_file = options.out_dir / kRunsFile;
-  std::map<std::string, RunRecord> done;
-  index_records(open_output(options.out_dir, problem, experiment, options.progress), done);
+  const std::filesystem::path file = runs_file(options);
+  std::map<std::string, RunRecord> done = open_output(experiment, problem, options);
 
   BenchResult result;
-  std::vector<Job> jobs = plan_jobs(experiment, seeds, done, result);
-  Recorder recorder(runs_file, options, result.planned, result.resumed);
+  const std::vector<PlannedRun> runs = planned_runs(experiment, seeds);
+  std::vector<Job> jobs = plan_jobs(runs, options, done, result);
+  Recorder recorder(file, options, result.planned, result.resumed);
   if (options.progress != nullptr && result.resumed > 0) {
-    *options.progress << runs_file.string() << ": " << result.resumed << " of " << result.planned
+    *options.progress << file.string() << ": " << result.resumed << " of " << result.planned
                       << " runs already done; running the other " << jobs.size() << '\n';
   }
   JobQueue queue(experiment, problem, options, std::move(jobs), recorder);
@@ -364,6 +309,13 @@ BenchResult run_experiment(const Experiment& experiment, const Problem& problem,
   result.ran = recorder.ran();
   result.interrupted = options.stop != nullptr && options.stop->load();
   index_records(recorder.take(), done);
+  if (options.shard) {
+    // A shard's result is its own runs.
+    for (std::size_t p = 0; p < runs.size(); ++p) {
+      if (shard_of(p, options.shard->count) != options.shard->index)
+        done.erase(runs[p].key);
+    }
+  }
   result.records = ordered_records(experiment, seeds, done);
   result.wall_s = wall.seconds();
   return result;

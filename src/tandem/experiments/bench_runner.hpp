@@ -2,7 +2,9 @@
 // Running an experiment: every configuration x every seed, on worker threads (one in human time:
 // each run takes both cores), each run recorded as one JSON line in OUT/runs.jsonl the moment it
 // ends. A run that is already in that file is not run
-// again, so an interrupted experiment resumes where it stopped.
+// again, so an interrupted experiment resumes where it stopped. A shard (--shard K/N, a task of a
+// Slurm job array) runs its share of the runs into its own file (runs_folder.hpp);
+// merge_shards.hpp puts the shards' runs together.
 //
 // Threading: each worker owns its collision checker, motion validator and planner; the problem is
 // shared read-only. Finished runs go through one mutex that appends to the file and updates the
@@ -20,6 +22,7 @@
 #include <vector>
 
 #include "tandem/experiments/experiment.hpp"
+#include "tandem/experiments/runs_folder.hpp"
 #include "tandem/planning/tree.hpp"
 #include "tandem/runs/run_record.hpp"
 #include "tandem/scene/problem.hpp"
@@ -36,12 +39,16 @@ struct BenchOptions {
   /// Where the progress bar goes (nullptr: nowhere); live redraws one line with '\r'.
   std::ostream* progress = nullptr;
   bool live_progress = false;
+  /// Runs only this shard's share, into OUT/shards/shard-K-of-N.jsonl; runs already in that file
+  /// or in OUT/runs.jsonl are not run again.
+  std::optional<Shard> shard;
 };
 
 struct BenchResult {
-  /// The experiment's runs that are recorded, in configuration order, then seed order.
+  /// The experiment's runs that are recorded (a shard's: its own), in configuration order, then
+  /// seed order.
   std::vector<RunRecord> records;
-  std::size_t planned = 0;  ///< configurations x seeds
+  std::size_t planned = 0;  ///< configurations x seeds (a shard: its share)
   std::size_t resumed = 0;  ///< found in runs.jsonl
   std::size_t ran = 0;      ///< run now
   bool interrupted = false;
