@@ -1,5 +1,7 @@
 #include "conversions.hpp"
 
+#include <pybind11/stl.h>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -86,6 +88,24 @@ Path path_of(const py::array_t<double, py::array::c_style | py::array::forcecast
     text << '\n';
   }
   return parse_path(text.str(), space, what);
+}
+
+py::array_t<double> config_array(const Config& q, const SE3Space& space) {
+  const py::array_t<double> rows = path_array({q}, space);
+  py::array_t<double> out(rows.shape(1));
+  std::copy(rows.data(), rows.data() + rows.shape(1), out.mutable_data());
+  return out;
+}
+
+py::dict nearest_dict(const NearestObstacle& n, const std::string& obstacle_name) {
+  py::dict out;
+  out["in_collision"] = n.in_collision;
+  out["distance"] = n.distance;
+  out["obstacle"] = obstacle_name;
+  out["point_on_object"] = std::vector<double>{n.point_on_object.begin(), n.point_on_object.end()};
+  out["point_on_obstacle"] =
+      std::vector<double>{n.point_on_obstacle.begin(), n.point_on_obstacle.end()};
+  return out;
 }
 
 }  // namespace tandem::python

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tandem/collision/collision_checker.hpp"
 #include "tandem/planning/path.hpp"
 
 namespace tandem::python {
@@ -21,6 +22,12 @@ std::size_t config_columns(const SE3Space& space);
 
 /// A path as an (n, 7) or (n, 3) array, the numbers tandem writes to a path file.
 py::array_t<double> path_array(const Path& path, const SE3Space& space);
+
+/// One configuration as a (7,) or (3,) array.
+py::array_t<double> config_array(const Config& q, const SE3Space& space);
+
+/// A nearest obstacle as a dict: in_collision, distance, obstacle (its name), the nearest points.
+py::dict nearest_dict(const NearestObstacle& n, const std::string& obstacle_name);
 
 /// An (n, 7) or (n, 3) array (or one row) as a path, read as a path file is (finite numbers,
 /// non-zero quaternions, normalised). Throws InputError naming `what` and the row.

@@ -1,5 +1,5 @@
 """tandem: interactive motion planning with contact. Type stubs of the compiled module."""
-from typing import Any, Sequence, overload
+from typing import Any, Callable, Sequence, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -54,3 +54,62 @@ class Collision:
     def nearest(self, q: npt.ArrayLike) -> dict[str, Any]:
         """in_collision, distance, obstacle, point_on_object, point_on_obstacle."""
     def distances(self, qs: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], list[str]]: ...
+
+OperatorView = dict[str, Any]
+"""What a Python operator is shown at each update: time (operator time, in planner iterations),
+iteration, nodes, tree_sizes, distance_to_roadmap (of its previous q_device, or None) and previous:
+None before its first update, else its previous state (time, q_device, nearest: {in_collision,
+distance, obstacle, point_on_object, point_on_obstacle}, contact_frame: None when touching, else
+{P_o, P_n, P_c, normal, R, delta, distance})."""
+
+class Session:
+    """A planner stepped from Python, in virtual time, with its operator; journaled on request
+    (then `tandem replay JOURNAL` rebuilds the same trees). A context manager: leaving it ends
+    the session."""
+    def __init__(self, problem: Problem | str, planner: str | None = None,
+                 seed: int | None = None, time_limit: float | None = None,
+                 operator: str | Callable[[OperatorView], npt.ArrayLike] | None = None,
+                 journal: str = "", digest_every: int = 10000,
+                 **params: float | int | bool | str) -> None:
+        """operator: for the interactive planners, None (the planner's default simulated
+        operator), 'experienced', 'inexperienced', 'trace:FILE', or a callable view -> q_device
+        ((7,) or (3,)) called every operator_period iterations. Keyword arguments set the
+        planner's parameters by name (tandem.parameters(planner))."""
+    def step(self, n: int = 1) -> str:
+        """Up to n iterations (fewer if the planner ends); the status."""
+    def run(self) -> str:
+        """Until solved, the time limit or the iteration limit; the status."""
+    def close(self) -> None: ...
+    def __enter__(self) -> Session: ...
+    def __exit__(self, *args: object) -> None: ...
+    @property
+    def status(self) -> str: ...
+    @property
+    def steps(self) -> int: ...
+    @property
+    def tree_digest(self) -> str: ...
+    @property
+    def stats(self) -> dict[str, Any]:
+        """iterations, nodes, edges, collision_checks, operator_iterations, contact_entries,
+        nodes_by_source."""
+    @property
+    def mode(self) -> str: ...
+    @property
+    def seed(self) -> int: ...
+    def trees(self) -> list[dict[str, Any]]:
+        """Per tree (the first rooted at the start): nodes (n, 7), parents (n,) with -1 at the
+        root, sources ('root', 'random', 'operator', 'contact')."""
+    @property
+    def solution(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def operator_state(self) -> dict[str, Any] | None: ...
+    @property
+    def journal(self) -> str | None: ...
+
+def bench(experiment: str, out: str = "", jobs: int = 0, seeds: int | None = None,
+          allow_dirs: Sequence[str] = (), shard: str = "") -> dict[str, Any]:
+    """Runs an experiment file as `tandem bench` does; name, records, planned, ran, resumed,
+    out, runs (the runs file), report (None for a shard)."""
+
+def read_runs(file: str) -> list[dict[str, Any]]:
+    """The records of a runs file, as dicts."""

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "conversions.hpp"
+#include "module_parts.hpp"
 #include "plan_run.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/io/json_codec.hpp"
@@ -19,12 +20,6 @@
 #include "tandem/scene/problem_loader.hpp"
 
 namespace tandem::python {
-namespace {
-
-/// A loaded problem, shared by the objects made from it.
-struct PyProblem {
-  std::shared_ptr<const Problem> problem;
-};
 
 PyProblem load(const std::string& spec, const std::string& part,
                const std::vector<std::string>& allow_dirs) {
@@ -32,15 +27,16 @@ PyProblem load(const std::string& spec, const std::string& part,
   options.take_out.part = part;
   for (const auto& d : allow_dirs)
     options.allowed_dirs.emplace_back(d);
-  return {std::make_shared<const Problem>(load_problem(spec, options))};
+  return {std::make_shared<const Problem>(load_problem(spec, options)), spec, options.take_out};
 }
 
-/// A Problem, or the spec of one (a file or a built-in scene's name), loaded.
 PyProblem as_problem(const py::object& problem) {
   if (py::isinstance<py::str>(problem))
     return load(problem.cast<std::string>(), "", {});
   return problem.cast<PyProblem>();
 }
+
+namespace {
 
 /// The planner's tunables with their defaults, names, ranges and help (as the tuning panel and
 /// the command line declare them).
@@ -68,6 +64,8 @@ py::list planners() {
   return out;
 }
 
+}  // namespace
+
 /// A keyword argument as the command line would have typed it.
 std::string option_text(const py::handle& value) {
   if (py::isinstance<py::bool_>(value))
@@ -91,6 +89,8 @@ cli::RunArgs run_args(const std::optional<std::string>& planner, std::optional<s
   }
   return args;
 }
+
+namespace {
 
 py::dict plan(const py::object& what, const std::optional<std::string>& planner,
               std::optional<std::uint64_t> seed, std::optional<double> time_limit, bool simplify,
@@ -158,15 +158,7 @@ class Collision {
     if (row.ndim() != 1)
       throw InputError("q", "nearest() takes one configuration; distances() takes many");
     const NearestObstacle n = checker_.nearest_obstacle(configs_of(row, problem_->space, "q")[0]);
-    py::dict out;
-    out["in_collision"] = n.in_collision;
-    out["distance"] = n.distance;
-    out["obstacle"] = checker_.obstacle_name(n.obstacle);
-    out["point_on_object"] =
-        std::vector<double>{n.point_on_object.begin(), n.point_on_object.end()};
-    out["point_on_obstacle"] =
-        std::vector<double>{n.point_on_obstacle.begin(), n.point_on_obstacle.end()};
-    return out;
+    return nearest_dict(n, checker_.obstacle_name(n.obstacle));
   }
 
   /// For many configurations: the distances (0 in collision) and the nearest obstacles' names.
@@ -205,14 +197,6 @@ py::array_t<double> bounds_array(const Problem& p) {
   return out;
 }
 
-/// One configuration as a (7,) or (3,) array.
-py::array_t<double> row(const Config& q, const Problem& p) {
-  const py::array_t<double> rows = path_array({q}, p.space);
-  py::array_t<double> out(rows.shape(1));
-  std::copy(rows.data(), rows.data() + rows.shape(1), out.mutable_data());
-  return out;
-}
-
 void define_problem(py::module_& m) {
   py::class_<PyProblem>(m, "Problem", "A motion-planning problem, loaded as `tandem plan` loads it")
       .def(py::init(&load), py::arg("spec"), py::arg("part") = "",
@@ -223,10 +207,12 @@ void define_problem(py::module_& m) {
       .def_property_readonly("source", [](const PyProblem& p) { return p.problem->source; })
       .def_property_readonly("planar", [](const PyProblem& p) { return p.problem->space.planar(); })
       .def_property_readonly("bounds", [](const PyProblem& p) { return bounds_array(*p.problem); })
-      .def_property_readonly("start",
-                             [](const PyProblem& p) { return row(p.problem->start, *p.problem); })
-      .def_property_readonly("goal",
-                             [](const PyProblem& p) { return row(p.problem->goal, *p.problem); })
+      .def_property_readonly(
+          "start",
+          [](const PyProblem& p) { return config_array(p.problem->start, p.problem->space); })
+      .def_property_readonly(
+          "goal",
+          [](const PyProblem& p) { return config_array(p.problem->goal, p.problem->space); })
       .def_property_readonly("obstacles",
                              [](const PyProblem& p) {
                                std::vector<std::string> names;
@@ -278,4 +264,6 @@ PYBIND11_MODULE(tandem, m) {
   });
   define_problem(m);
   define_functions(m);
+  define_session(m);
+  define_bench(m);
 }

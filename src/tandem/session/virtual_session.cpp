@@ -37,6 +37,7 @@ JournalHeader header_for(const Problem& problem, const RunSpec& spec,
                          const VirtualSessionOptions& options, const std::string& operator_text) {
   JournalHeader h;
   h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
+  h.take_out = options.take_out;
   h.problem_digest = format_digest(problem_digest(problem));
   h.mode = spec.mode;
   h.settings = spec.settings;
@@ -58,6 +59,8 @@ VirtualSession::VirtualSession(const Problem& problem, const RunSpec& spec,
       parameters_(spec.settings.interaction) {
   interaction_.parameters = &parameters_;
   std::string operator_text = "none";
+  if (source != nullptr && !uses_operator(spec_))
+    throw InputError("operator", spec_.mode + " plans alone: it takes no operator");
   if (uses_operator(spec_)) {
     if (source == nullptr)
       source = make_operator(problem, spec_, OperatorClock::ticks);
@@ -66,11 +69,17 @@ VirtualSession::VirtualSession(const Problem& problem, const RunSpec& spec,
                                             spec_.operator_period);
     interaction_.feed = feed_.get();
   }
+  if (!options_.journal.empty() && feed_ == nullptr) {
+    throw InputError("journal",
+                     "only the sessions of planners that take an operator are "
+                     "journaled; " +
+                         spec_.mode + " plans alone (its seed repeats it)");
+  }
   if (!options_.journal.empty())
     journal_.emplace(options_.journal, header_for(problem, spec_, options_, operator_text));
   // One thread: the planner and the operator share it (spec.settings.threads is not used).
   planner_ = make_planner(spec_.mode, validator_, problem.start, problem.goal, spec_.settings,
-                          &interaction_);
+                          feed_ != nullptr ? &interaction_ : nullptr);
   next_digest_ = options_.digest_every;
 }
 

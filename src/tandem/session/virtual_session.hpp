@@ -29,6 +29,7 @@ namespace tandem {
 
 struct VirtualSessionOptions {
   std::string problem_name;            ///< as the user named it (written in the journal)
+  TakeOutOptions take_out;             ///< and, for a STEP or IGES problem, its part and options
   std::filesystem::path journal;       ///< "" for none
   std::uint64_t digest_every = 10000;  ///< a tree digest in the journal every this many steps
 };
@@ -37,7 +38,8 @@ class VirtualSession {
  public:
   /// `source` drives the operator of an interactive planner (null: the spec's operator, made as
   /// an experiment makes it; a planner without an operator takes none). Throws InputError for a
-  /// spec the problem cannot run or a journal that cannot be written.
+  /// spec the problem cannot run, a journal that cannot be written, or a journal or a source for
+  /// a planner that plans alone (its seed repeats it; the replay is of operators).
   VirtualSession(const Problem& problem, const RunSpec& spec,
                  std::shared_ptr<const OperatorSource> source,
                  const VirtualSessionOptions& options);

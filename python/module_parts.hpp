@@ -1,0 +1,45 @@
+#pragma once
+// What the parts of the Python module share: a loaded problem, and planner options given as
+// keyword arguments, read as the command line reads them. Each part defines its classes and
+// functions on the module.
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run_options.hpp"
+#include "tandem/scene/problem.hpp"
+#include "tandem/scene/take_out.hpp"
+
+namespace tandem::python {
+
+namespace py = pybind11;
+
+/// A loaded problem, shared by the objects made from it.
+struct PyProblem {
+  std::shared_ptr<const Problem> problem;
+  std::string spec;  ///< as given: a file, a built-in scene's name (journals name it so)
+  TakeOutOptions take_out;
+};
+
+PyProblem load(const std::string& spec, const std::string& part,
+               const std::vector<std::string>& allow_dirs);
+/// A Problem, or the spec of one (a file or a built-in scene's name), loaded.
+PyProblem as_problem(const py::object& problem);
+
+/// A keyword argument as the command line would have typed it.
+std::string option_text(const py::handle& value);
+/// The command line's options of a run: the planner, the seed, the time limit and the planner's
+/// parameters by name. Throws InputError for an unknown parameter.
+cli::RunArgs run_args(const std::optional<std::string>& planner, std::optional<std::uint64_t> seed,
+                      std::optional<double> time_limit, const py::kwargs& params);
+
+/// tandem.Session and the operators written in Python (session_binding.cpp).
+void define_session(py::module_& m);
+/// tandem.bench: an experiment file run as `tandem bench` runs it (bench_binding.cpp).
+void define_bench(py::module_& m);
+
+}  // namespace tandem::python
