@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "run_options.hpp"
+#include "tandem/collision/collision_checker.hpp"
 #include "tandem/scene/problem.hpp"
 #include "tandem/scene/take_out.hpp"
 
@@ -21,6 +22,11 @@ namespace py = pybind11;
 /// A loaded problem, shared by the objects made from it.
 struct PyProblem {
   std::shared_ptr<const Problem> problem;
+  /// A checker of the problem's scene with its distance grid, made at the first plan() and
+  /// cloned by every plan() (the grid takes longer to build than an easy problem to plan). Made
+  /// with the GIL held, then only cloned (a const read, safe from several threads).
+  std::shared_ptr<std::optional<CollisionChecker>> prepared =
+      std::make_shared<std::optional<CollisionChecker>>();
   std::string spec;  ///< as given: a file, a built-in scene's name (journals name it so)
   TakeOutOptions take_out;
 };

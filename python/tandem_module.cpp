@@ -27,7 +27,11 @@ PyProblem load(const std::string& spec, const std::string& part,
   options.take_out.part = part;
   for (const auto& d : allow_dirs)
     options.allowed_dirs.emplace_back(d);
-  return {std::make_shared<const Problem>(load_problem(spec, options)), spec, options.take_out};
+  PyProblem p;
+  p.problem = std::make_shared<const Problem>(load_problem(spec, options));
+  p.spec = spec;
+  p.take_out = options.take_out;
+  return p;
 }
 
 PyProblem as_problem(const py::object& problem) {
@@ -98,10 +102,16 @@ py::dict plan(const py::object& what, const std::optional<std::string>& planner,
   const cli::RunArgs args = run_args(planner, seed, time_limit, params);
   const PyProblem p = as_problem(what);
   const Problem& problem = *p.problem;
+  if (!p.prepared->has_value()) {
+    p.prepared->emplace(problem.scene);
+    // The grid the planners' validators use (the default validation settings).
+    const MotionValidator validator(problem.space, **p.prepared,
+                                    validation_settings(PlannerSettings{}));
+  }
   cli::PlanRun r;
   {
     const py::gil_scoped_release release;
-    r = cli::plan_run(problem, args, simplify);
+    r = cli::plan_run(problem, args, simplify, &**p.prepared);
   }
   const bool solved = r.run.status == PlannerStatus::solved;
   py::dict out =

@@ -29,13 +29,15 @@ void finish_path(PlanRun& out, const Problem& problem, bool simplify, MotionVali
 
 }  // namespace
 
-PlanRun plan_run(const Problem& problem, const RunArgs& args, bool simplify) {
+PlanRun plan_run(const Problem& problem, const RunArgs& args, bool simplify,
+                 const CollisionChecker* prepared) {
   PlanRun out;
   out.spec = make_spec(args, problem);
   // Shown resolved: --threads 0 (the default) is one per core.
   if (!uses_operator(out.spec))
     out.spec.settings.threads = resolve_threads(out.spec);
-  CollisionChecker checker(problem.scene);
+  CollisionChecker checker =
+      prepared != nullptr ? prepared->clone() : CollisionChecker(problem.scene);
   require_valid_endpoints(problem, checker, validation_settings(out.spec.settings));
   out.run = execute_run(problem, out.spec, checker);
   if (out.run.status == PlannerStatus::solved) {

@@ -17,6 +17,9 @@ struct PlanRun {
 };
 
 /// Throws InputError for bad options, or a start or goal outside the bounds or in collision.
-PlanRun plan_run(const Problem& problem, const RunArgs& args, bool simplify);
+/// `prepared`, if given, is a checker of this problem's scene whose clone the run uses: what it
+/// has built (the distance grid) is not built again.
+PlanRun plan_run(const Problem& problem, const RunArgs& args, bool simplify,
+                 const CollisionChecker* prepared = nullptr);
 
 }  // namespace tandem::cli
