@@ -45,6 +45,8 @@ cli::RunArgs run_args(const std::optional<std::string>& planner, std::optional<s
 
 /// tandem.Session and the operators written in Python (session_binding.cpp).
 void define_session(py::module_& m);
+/// tandem.live: a live session with a Python operator (live_binding.cpp).
+void define_live(py::module_& m);
 /// tandem.bench: an experiment file run as `tandem bench` runs it (bench_binding.cpp).
 void define_bench(py::module_& m);
 

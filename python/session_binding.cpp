@@ -13,6 +13,7 @@
 
 #include "conversions.hpp"
 #include "module_parts.hpp"
+#include "python_operator.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/runs/run_spec.hpp"
 #include "tandem/session/virtual_session.hpp"
@@ -20,98 +21,21 @@
 namespace tandem::python {
 namespace {
 
-std::vector<double> vec(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
-
-py::object frame_dict(const std::optional<ContactFrame>& f) {
-  if (!f)
-    return py::none();
-  py::dict d;
-  d["P_o"] = vec(f->P_o);
-  d["P_n"] = vec(f->P_n);
-  d["P_c"] = vec(f->P_c);
-  d["normal"] = vec(f->n);
-  std::vector<std::vector<double>> r(3, std::vector<double>(3));
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j)
-      r[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = f->R(i, j);
-  }
-  d["R"] = r;
-  d["delta"] = f->delta;
-  d["distance"] = f->distance;
-  return d;
-}
-
-/// The operator state the planner was given last, as Python sees it; None before the first.
-py::object state_dict(const OperatorState* s, const Problem& problem) {
-  if (s == nullptr)
-    return py::none();
-  py::dict d;
-  d["time"] = s->time;
-  d["q_device"] = config_array(s->device.q_device, problem.space);
-  const std::size_t k = s->nearest.obstacle;
-  d["nearest"] = nearest_dict(
-      s->nearest, k < problem.scene.obstacles.size() ? problem.scene.obstacles[k].name : "");
-  d["contact_frame"] = frame_dict(s->frame);
-  return d;
-}
-
-/// What a Python operator is shown at each of its updates: the time, the trees' state and the
-/// operator state of its previous update (its q_device, nearest obstacle, contact frame).
-py::dict operator_view(double t, const VirtualSession& session, const Problem& problem) {
+/// What a Python operator is shown of a session's trees: the iteration, the nodes, each tree's
+/// size, and how far the tree it carries is from where it held the part (None at first).
+void show_trees(py::dict& view, const VirtualSession& session) {
   const Planner& planner = session.planner();
-  py::dict d;
-  d["time"] = t;
-  d["iteration"] = planner.stats().iterations;
-  d["nodes"] = planner.stats().nodes;
+  view["iteration"] = planner.stats().iterations;
+  view["nodes"] = planner.stats().nodes;
   std::vector<std::size_t> sizes;
   for (const Tree* tree : planner.trees())
     sizes.push_back(tree->size());
-  d["tree_sizes"] = sizes;
+  view["tree_sizes"] = sizes;
   const OperatorState* last = session.operator_state();
-  d["previous"] = state_dict(last, problem);
-  d["distance_to_roadmap"] =
+  view["distance_to_roadmap"] =
       last != nullptr ? py::object(py::float_(planner.distance_to_roadmap(last->device.q_device)))
                       : py::object(py::none());
-  return d;
 }
-
-/// An operator written in Python: `callable(view) -> q_device`, a (7,) or (3,) array-like, called
-/// every spec.operator_period planner iterations with operator_view().
-class PythonOperator final : public OperatorSource {
- public:
-  PythonOperator(py::object callable, std::shared_ptr<const Problem> problem)
-      : callable_(std::move(callable)), problem_(std::move(problem)) {
-    name_ = py::str(py::getattr(callable_, "__name__", py::str(py::repr(callable_))));
-  }
-  ~PythonOperator() override {
-    const py::gil_scoped_acquire gil;
-    callable_ = py::object();
-  }
-  PythonOperator(const PythonOperator&) = delete;
-  PythonOperator& operator=(const PythonOperator&) = delete;
-
-  void watch(const VirtualSession* session) { session_ = session; }
-
-  DeviceReading read(double t) const override {
-    const py::gil_scoped_acquire gil;
-    const py::object q = callable_(operator_view(t, *session_, *problem_));
-    using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
-    const Rows row = q.cast<Rows>();
-    if (row.ndim() != 1)
-      throw InputError("operator", "must return one configuration (a (7,) or (3,) array)");
-    return {configs_of(row, problem_->space, "the operator's q_device")[0]};
-  }
-  double end_time() const override { return std::numeric_limits<double>::infinity(); }
-  std::string describe() const override { return "Python operator " + name_; }
-
- private:
-  py::object callable_;
-  std::shared_ptr<const Problem> problem_;
-  const VirtualSession* session_ = nullptr;
-  std::string name_;
-};
 
 class PySession {
  public:
@@ -126,8 +50,6 @@ class PySession {
     spec_ = cli::make_spec(args, *problem_.problem);
     std::shared_ptr<const OperatorSource> source;
     if (!op.is_none() && !py::isinstance<py::str>(op)) {
-      if (!PyCallable_Check(op.ptr()))
-        throw InputError("operator", "must be a callable, an operator's name or None");
       python_op_ = std::make_shared<PythonOperator>(op, problem_.problem);
       source = python_op_;
     }
@@ -137,8 +59,10 @@ class PySession {
     options.journal = journal;
     options.digest_every = digest_every;
     session_ = std::make_unique<VirtualSession>(*problem_.problem, spec_, source, options);
-    if (python_op_)
-      python_op_->watch(session_.get());
+    if (python_op_) {
+      const VirtualSession* session = session_.get();
+      python_op_->show_trees([session](py::dict& view) { show_trees(view, *session); });
+    }
   }
 
   std::string step(std::uint64_t n) {

@@ -106,6 +106,18 @@ class Session:
     @property
     def journal(self) -> str | None: ...
 
+def live(problem: Problem | str, planner: str | None = None, seed: int | None = None,
+         time_limit: float | None = None,
+         operator: str | Callable[[OperatorView], npt.ArrayLike] | None = None,
+         journal: str = "", rate_hz: float = 200.0,
+         **params: float | int | bool | str) -> dict[str, Any]:
+    """A live session in human time, as `tandem interactive` runs one: the planner on this
+    thread, the operator on its own, called rate_hz times a second (its view's time in seconds,
+    with iteration, nodes, elapsed_s, iterations_per_s and previous). Journaled to `journal`
+    (required); `tandem replay` rebuilds the trees. An exception of the operator ends the session
+    and is raised here. Returns status, steps, iterations, nodes, tree_digest, solution,
+    journal."""
+
 def bench(experiment: str, out: str = "", jobs: int = 0, seeds: int | None = None,
           allow_dirs: Sequence[str] = (), shard: str = "") -> dict[str, Any]:
     """Runs an experiment file as `tandem bench` does; name, records, planned, ran, resumed,

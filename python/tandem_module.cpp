@@ -275,5 +275,6 @@ PYBIND11_MODULE(tandem, m) {
   define_problem(m);
   define_functions(m);
   define_session(m);
+  define_live(m);
   define_bench(m);
 }

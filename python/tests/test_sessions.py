@@ -183,3 +183,34 @@ def test_an_experiment_runs_from_python_as_tandem_bench_runs_it():
             assert digests[(r["config"], r["seed"])] == r["tree_digest"]
         with pytest.raises(tandem.InputError, match="shard"):
             tandem.bench(exp, out=sharded, shard="3/2")
+
+
+def test_a_python_operator_drives_a_live_session_that_tandem_replay_reproduces(cluttered):
+    op = TowardTheGoal(cluttered)
+    with tempfile.TemporaryDirectory() as d:
+        journal = os.path.join(d, "live.jsonl")
+        r = tandem.live(cluttered, planner="interactive-contact", seed=8, operator=op,
+                        journal=journal, time_limit=10, alpha=0.5, rate_hz=200)
+        assert r["status"] in ("solved", "timeout") and r["steps"] > 0
+        # On the wall clock: seconds, at about rate_hz.
+        times = [v["time"] for v in op.views]
+        assert len(times) >= 2 and times == sorted(times) and times[-1] < 11
+        assert op.views[-1]["previous"] is not None
+        replay = run_cli("replay", journal)
+        assert replay.returncode == 0, replay.stderr
+        assert r["tree_digest"] in replay.stdout and "identical" in replay.stdout
+        if r["status"] == "solved":
+            assert tandem.check_path(cluttered, r["solution"])["valid"]
+
+        def lost(view):
+            if view["time"] > 0.1:
+                raise KeyError("lost the device")
+            return cluttered.start
+
+        with pytest.raises(KeyError, match="lost the device"):
+            tandem.live(cluttered, planner="interactive", seed=1, operator=lost,
+                        journal=os.path.join(d, "lost.jsonl"), time_limit=5)
+    with pytest.raises(tandem.InputError, match="journal"):
+        tandem.live(cluttered, planner="interactive", operator=op)
+    with pytest.raises(tandem.InputError, match="rate_hz"):
+        tandem.live(cluttered, planner="interactive", operator=op, journal="x.jsonl", rate_hz=0)

@@ -12,11 +12,12 @@ namespace tandem {
 namespace {
 
 std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunSpec& spec,
-                                              bool spacemouse) {
+                                              const LiveOptions& options) {
   require_live_planner(spec);
-  std::shared_ptr<const OperatorSource> simulated;
-  if (spec.operator_name != "browser")
+  std::shared_ptr<const OperatorSource> simulated = options.operator_source;
+  if (simulated == nullptr && spec.operator_name != "browser")
     simulated = make_operator(problem, spec, OperatorClock::seconds);
+  const bool spacemouse = options.spacemouse;
   std::unique_ptr<SpaceNav> nav;
   std::string why = "no SpaceMouse (not asked for)";
   if (spacemouse)
@@ -60,7 +61,7 @@ LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const Live
     : problem_(problem),
       spec_(spec),
       options_(options),
-      switch_(live_operator(problem, spec, options.spacemouse)),
+      switch_(live_operator(problem, spec, options)),
       checker_(problem.scene),
       validator_(problem.space, checker_),
       feed_(channel_, &roadmap_distance_) {

@@ -46,6 +46,9 @@ struct LiveOptions {
   bool spacemouse = true;
   /// How often the observer is called.
   double observe_every_s = 1.0 / 30.0;
+  /// An operator the caller provides (the Python module's), on the wall clock, instead of the
+  /// spec's simulated one; read on the operator thread.
+  std::shared_ptr<const OperatorSource> operator_source;
 };
 
 struct LiveProgress {
