@@ -157,7 +157,8 @@ int merge_or_submit(const BenchArgs& args, const LoadedBench& bench) {
   const bool resubmit = args.merge ? args.retries > 0 : true;
   if (sweep && !merged.incomplete.empty() && resubmit) {
     if (args.merge)
-      std::cout << "shards " << array_spec(merged.incomplete) << " have runs missing\n";
+      std::cout << "shards with runs missing: " << array_spec(merged.incomplete) << " of "
+                << sweep->tasks << '\n';
     submit_sweep(*sweep, merged.incomplete, args.merge ? args.retries - 1 : args.retries,
                  std::cout);
     return 0;
