@@ -33,6 +33,8 @@ struct PyProblem {
 
 PyProblem load(const std::string& spec, const std::string& part,
                const std::vector<std::string>& allow_dirs);
+/// The problem's prepared checker (made at the first call; see PyProblem::prepared).
+const CollisionChecker& prepared_checker(const PyProblem& p);
 /// A Problem, or the spec of one (a file or a built-in scene's name), loaded.
 PyProblem as_problem(const py::object& problem);
 

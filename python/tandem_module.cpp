@@ -34,6 +34,16 @@ PyProblem load(const std::string& spec, const std::string& part,
   return p;
 }
 
+const CollisionChecker& prepared_checker(const PyProblem& p) {
+  if (!p.prepared->has_value()) {
+    p.prepared->emplace(p.problem->scene);
+    // The grid the planners' validators use (the default validation settings).
+    const MotionValidator validator(p.problem->space, **p.prepared,
+                                    validation_settings(PlannerSettings{}));
+  }
+  return **p.prepared;
+}
+
 PyProblem as_problem(const py::object& problem) {
   if (py::isinstance<py::str>(problem))
     return load(problem.cast<std::string>(), "", {});
@@ -102,16 +112,11 @@ py::dict plan(const py::object& what, const std::optional<std::string>& planner,
   const cli::RunArgs args = run_args(planner, seed, time_limit, params);
   const PyProblem p = as_problem(what);
   const Problem& problem = *p.problem;
-  if (!p.prepared->has_value()) {
-    p.prepared->emplace(problem.scene);
-    // The grid the planners' validators use (the default validation settings).
-    const MotionValidator validator(problem.space, **p.prepared,
-                                    validation_settings(PlannerSettings{}));
-  }
+  const CollisionChecker& prepared = prepared_checker(p);
   cli::PlanRun r;
   {
     const py::gil_scoped_release release;
-    r = cli::plan_run(problem, args, simplify, &**p.prepared);
+    r = cli::plan_run(problem, args, simplify, &prepared);
   }
   const bool solved = r.run.status == PlannerStatus::solved;
   py::dict out =
@@ -146,7 +151,10 @@ using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// Collision and distance queries against a problem's obstacles (FCL, as the planners use it).
 class Collision {
  public:
-  explicit Collision(const PyProblem& p) : problem_(p.problem), checker_(problem_->scene) {}
+  /// The checker the planners use, distance grid included (it answers about half of Easy's
+  /// queries without FCL, always as FCL would: see the collision tests).
+  explicit Collision(const PyProblem& p)
+      : problem_(p.problem), checker_(prepared_checker(p).clone()) {}
 
   /// Whether the object is clear of every obstacle: a bool for one row, a bool array for many.
   py::object is_free(const Rows& rows) {

@@ -85,6 +85,17 @@ def test_collision_and_distance_queries_one_or_a_batch(cluttered):
     sunk[2] = cluttered.bounds[0][2]
     assert c.is_free(sunk) is False
     assert c.distances(np.stack([sunk]))[0][0] == 0
+    # On random configurations, is_free (through the distance grid where it answers) agrees with
+    # FCL's exact distance (positive where free).
+    rng = np.random.default_rng(5)
+    lo, hi = cluttered.bounds
+    qs = np.empty((3000, 7))
+    qs[:, :3] = rng.uniform(lo, hi, size=(3000, 3))
+    quat = rng.normal(size=(3000, 4))
+    qs[:, 3:] = quat / np.linalg.norm(quat, axis=1, keepdims=True)
+    free = c.is_free(qs)
+    assert 0 < free.sum() < len(qs)
+    np.testing.assert_array_equal(free, c.distances(qs)[0] > 0)
 
 
 def test_every_planner_lists_its_parameters_from_the_command_lines_table():
