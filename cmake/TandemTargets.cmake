@@ -9,4 +9,9 @@ function(tandem_target_settings target)
     target_compile_options(${target} PRIVATE -fsanitize=${TANDEM_SANITIZE} -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=${TANDEM_SANITIZE})
   endif()
+  # The fuzzing build (clang): libFuzzer's coverage instrumentation in every target of ours; the
+  # fuzz targets link libFuzzer itself (fuzz/CMakeLists.txt).
+  if(TANDEM_FUZZ)
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
 endfunction()

@@ -111,7 +111,10 @@ double bottleneck(const Blocks& b, int from, int to) {
   width[static_cast<std::size_t>(from)] = std::numeric_limits<double>::infinity();
   open.push({width[static_cast<std::size_t>(from)], from});
   while (!open.empty()) {
-    const auto [w, i] = open.top();
+    // (Plain copies, not a structured binding: clang 14, the fuzzing build's compiler, cannot
+    // capture bindings in a lambda.)
+    const double w = open.top().first;
+    const int i = open.top().second;
     open.pop();
     if (i == to)
       return w;
@@ -141,7 +144,8 @@ std::vector<int> route(const Blocks& b, int from, int to, double least, double o
   queue.push({0.0, from});
   const double floor = 1e-3 * open_width;
   while (!queue.empty()) {
-    const auto [g, i] = queue.top();
+    const double g = queue.top().first;
+    const int i = queue.top().second;
     queue.pop();
     if (i == to)
       break;

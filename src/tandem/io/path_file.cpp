@@ -7,6 +7,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem {
 namespace {
@@ -77,12 +78,10 @@ Path parse_path(const std::string& text, const SE3Space& space, const std::strin
     }
     Config q;
     q.t = {v[0], v[1], v[2]};
-    q.q = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
-    const double norm = q.q.norm();
-    if (!(norm > 1e-9))
+    const auto unit = unit_quaternion(v[6], v[3], v[4], v[5], 1e-9, 1e-12);
+    if (!unit)
       throw InputError(where, "the quaternion is zero");
-    if (std::abs(norm - 1.0) > 1e-12)
-      q.q.normalize();
+    q.q = *unit;
     path.push_back(q);
   }
   if (path.empty())

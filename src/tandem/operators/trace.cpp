@@ -7,6 +7,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem {
 
@@ -79,12 +80,10 @@ Trace parse_trace(const std::string& text, const std::string& source) {
     TraceSample sample;
     sample.t = v[0];
     sample.q.t = {v[1], v[2], v[3]};
-    sample.q.q = Eigen::Quaterniond(v[7], v[4], v[5], v[6]);
-    const double norm = sample.q.q.norm();
-    if (!(norm > 1e-9))
+    const auto unit = unit_quaternion(v[7], v[4], v[5], v[6], 1e-9, 1e-12);
+    if (!unit)
       throw InputError(where, "the quaternion is zero");
-    if (std::abs(norm - 1.0) > 1e-12)
-      sample.q.q.normalize();
+    sample.q.q = *unit;
     sample.buttons = static_cast<std::uint32_t>(*buttons);
     if (sample.t < 0.0)
       throw InputError(where, "time must not be negative");

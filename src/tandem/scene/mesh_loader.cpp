@@ -11,6 +11,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
+#include "tandem/scene/ply_header.hpp"
 
 namespace tandem {
 namespace {
@@ -44,6 +45,31 @@ void collect(const aiScene* scene, const aiNode* node, aiMatrix4x4 transform, Tr
   }
 }
 
+/// Throws InputError unless every face names 1 to N existing vertices and its mesh declares the
+/// face's primitive type: assimp 5.2's triangulation aborts the process on a mesh that does not
+/// (a malformed PLY face list, found by fuzzing).
+void check_faces(const aiScene* scene, const std::string& name) {
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      const unsigned n = face.mNumIndices;
+      const unsigned type = n == 1   ? aiPrimitiveType_POINT
+                            : n == 2 ? aiPrimitiveType_LINE
+                            : n == 3 ? aiPrimitiveType_TRIANGLE
+                                     : aiPrimitiveType_POLYGON;
+      if (n == 0 || (mesh->mPrimitiveTypes & type) == 0)
+        throw InputError(name, "malformed mesh: face " + std::to_string(f) + " of mesh " +
+                                   std::to_string(m) + " has " + std::to_string(n) + " vertices");
+      for (unsigned k = 0; k < n; ++k) {
+        if (face.mIndices[k] >= mesh->mNumVertices)
+          throw InputError(name, "malformed mesh: face " + std::to_string(f) + " of mesh " +
+                                     std::to_string(m) + " names a vertex it does not have");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 bool is_supported_mesh_file(const std::filesystem::path& file) {
@@ -65,14 +91,24 @@ LoadedMesh load_mesh(const std::filesystem::path& file) {
   }
   if (!std::ifstream(file).good())
     throw InputError(name, "cannot be opened for reading");
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".ply")
+    check_ply_header(file);
 
   Assimp::Importer importer;
   // Keep points and lines out of the triangle data rather than failing on them.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
-  const unsigned flags = aiProcess_GenNormals | aiProcess_Triangulate |
-                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                         aiProcess_OptimizeGraph | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFile(name, flags);
+  // Read and validated first, then the faces checked, then processed (as one ReadFile with all
+  // the flags would, in the same order).
+  const aiScene* scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
+  if (scene != nullptr) {
+    check_faces(scene, name);
+    scene = importer.ApplyPostProcessing(aiProcess_GenNormals | aiProcess_Triangulate |
+                                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                                         aiProcess_OptimizeGraph);
+  }
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty())

@@ -8,6 +8,7 @@
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
 #include "tandem/scene/mesh_loader.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem {
 namespace {
@@ -104,12 +105,10 @@ Eigen::Quaterniond axis_angle(const ProblemSection& p, const std::string& prefix
   const double theta = p.number(prefix + ".theta");
   Eigen::Vector3d axis(p.number_or(prefix + ".axis.x", 1.0), p.number_or(prefix + ".axis.y", 0.0),
                        p.number_or(prefix + ".axis.z", 0.0));
-  if (axis.norm() == 0.0) {
-    if (theta != 0.0)
-      throw InputError(file, prefix + ".axis is the zero vector");
-    axis = Eigen::Vector3d::UnitX();
-  }
-  return Eigen::Quaterniond(Eigen::AngleAxisd(theta, axis.normalized()));
+  const std::optional<Eigen::Vector3d> unit = unit_direction(axis);
+  if (!unit && theta != 0.0)
+    throw InputError(file, prefix + ".axis is the zero vector");
+  return Eigen::Quaterniond(Eigen::AngleAxisd(theta, unit.value_or(Eigen::Vector3d::UnitX())));
 }
 
 std::filesystem::path mesh_path(const std::filesystem::path& cfg, const std::string& file_name) {

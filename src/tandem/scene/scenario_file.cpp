@@ -14,6 +14,7 @@
 #include "tandem/scene/cad_scene.hpp"
 #include "tandem/scene/mesh_loader.hpp"
 #include "tandem/scene/urdf_loader.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem {
 namespace {
@@ -51,10 +52,10 @@ Eigen::Quaterniond read_rotation(TomlTable& t, bool planar) {
   } else if (t.has("quaternion")) {
     const toml::node& n = t.require("quaternion");
     auto v = t.numbers(n, "quaternion", 4, 4);
-    Eigen::Quaterniond raw(v[3], v[0], v[1], v[2]);
-    if (!(raw.norm() > 1e-9))
+    const auto unit = unit_quaternion(v[3], v[0], v[1], v[2], 1e-9);
+    if (!unit)
       t.fail(n, "quaternion", "must not be zero");
-    q = raw.normalized();
+    q = *unit;
   } else if (t.has("yaw_deg")) {
     q = rpy(0, 0, t.number("yaw_deg") * kDeg);
   } else if (t.has("yaw")) {

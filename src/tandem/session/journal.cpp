@@ -297,7 +297,7 @@ Journal read_journal(const std::filesystem::path& file) {
     json j;
     try {
       j = json::parse(line);
-    } catch (const json::parse_error&) {
+    } catch (const json::exception&) {
       at.fail("not a JSON object");
     }
     try {

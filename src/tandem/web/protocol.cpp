@@ -96,7 +96,7 @@ ClientMessage parse_client_message(std::string_view text, const InteractionSetti
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error&) {
+  } catch (const json::exception&) {
     throw ProtocolError("not JSON");
   }
   if (!j.is_object() || !j.contains("type") || !j["type"].is_string())
