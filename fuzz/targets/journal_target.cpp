@@ -4,7 +4,9 @@
 
 #include "fuzz_target.hpp"
 #include "scratch_folder.hpp"
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/planning/planner_settings.hpp"
 #include "tandem/scene/problem_loader.hpp"
 #include "tandem/session/journal.hpp"
 #include "tandem/session/replay.hpp"
@@ -21,6 +23,18 @@ const Problem& replay_problem() {
   return problem;
 }
 
+/// The problem's checker with the distance grid the planners' default settings use, built once
+/// (under the sanitizers building it takes seconds; every replay clones it).
+const CollisionChecker& prepared_checker() {
+  static const CollisionChecker checker = [] {
+    CollisionChecker c(replay_problem().scene);
+    const MotionValidator validator(replay_problem().space, c,
+                                    validation_settings(PlannerSettings{}));
+    return c;
+  }();
+  return checker;
+}
+
 }  // namespace
 
 bool journal(std::string_view input) {
@@ -30,7 +44,7 @@ bool journal(std::string_view input) {
     const Journal j = read_journal(file);
     if (!j.digests.empty() && j.digests.back().steps > kMaxReplaySteps)
       return false;
-    return replay_journal(replay_problem(), j).matched();
+    return replay_journal(replay_problem(), j, {}, {}, &prepared_checker()).matched();
   } catch (const InputError&) {
     return false;
   }

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
 
@@ -48,6 +50,14 @@ TEST(PathFile, ReadsPlanarPathsAsYaw) {
 TEST(PathFile, NormalisesQuaternionsOnlyWhenNeeded) {
   const Path p = parse_path("0 0 0 0 0 0 2\n", space3(), "p");
   EXPECT_DOUBLE_EQ(p[0].q.w(), 1.0);
+}
+
+// Squaring 1e308 overflows: the quaternion must still come out as the unit one it points along (a
+// fuzzing finding: it read as the zero quaternion).
+TEST(PathFile, NormalisesHugeQuaternionsWithoutOverflow) {
+  const Path p = parse_path("0 0 0 0 1e308 0 1e308\n", space3(), "p");
+  EXPECT_NEAR(p[0].q.y(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(p[0].q.w(), std::sqrt(0.5), 1e-15);
 }
 
 std::string error_of(const std::string& text, const SE3Space& space) {

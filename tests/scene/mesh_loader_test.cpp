@@ -89,3 +89,24 @@ TEST(MeshLoader, RejectsMalformedFiles) {
 
 }  // namespace
 }  // namespace tandem
+
+namespace tandem {
+namespace {
+
+// assimp 5.2 loops forever on a PLY "element" line without its count, and aborts the process on a
+// face list its triangulation cannot follow (fuzzing findings): tandem refuses both first.
+TEST(MeshLoader, RefusesPlyFilesAssimpCannotRead) {
+  TempDir dir;
+  expect_rejected(dir.write("h.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n"),
+                  "malformed PLY header line 'element vertex'");
+  expect_rejected(dir.write("e.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"),
+                  "no 'end_header'");
+  const std::string faces =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 7\n";
+  EXPECT_THROW(load_mesh(dir.write("f.ply", faces)), InputError);
+}
+
+}  // namespace
+}  // namespace tandem

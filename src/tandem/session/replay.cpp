@@ -41,10 +41,12 @@ std::vector<std::vector<FeedRecord>> operator_segments(const Journal& journal,
 }  // namespace
 
 ReplayResult replay_journal(const Problem& problem, const Journal& journal,
-                            const ReplayStep& on_step, const std::function<void()>& on_reset) {
+                            const ReplayStep& on_step, const std::function<void()>& on_reset,
+                            const CollisionChecker* prepared) {
   const JournalHeader& h = journal.header;
   require_replayable(problem, h);
-  CollisionChecker checker(problem.scene);
+  CollisionChecker checker =
+      prepared != nullptr ? prepared->clone() : CollisionChecker(problem.scene);
   std::vector<std::vector<FeedRecord>> segments = operator_segments(journal, checker);
   InteractionParameters parameters(h.settings.interaction);
   MotionValidator validator(problem.space, checker);

@@ -30,10 +30,13 @@ struct ReplayResult {
 /// Throws InputError if the journal's problem digest is not the problem's, or its mode is unknown.
 /// `on_step`, if given, is called after every step with the planner and the operator state it used
 /// last (a viewer can follow the replay), and once more with `last` set when the replay ends;
-/// `on_reset` when the replay starts the planner over where the user did.
+/// `on_reset` when the replay starts the planner over where the user did. `prepared`, if given, is a
+/// checker of the problem already prepared (its distance grid built): the replay clones it rather
+/// than build the grid again.
 using ReplayStep = std::function<void(const Planner&, const OperatorState*, bool last)>;
 ReplayResult replay_journal(const Problem& problem, const Journal& journal,
                             const ReplayStep& on_step = {},
-                            const std::function<void()>& on_reset = {});
+                            const std::function<void()>& on_reset = {},
+                            const CollisionChecker* prepared = nullptr);
 
 }  // namespace tandem
