@@ -9,7 +9,9 @@
 
 #include "targets/fuzz_target.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+namespace {
+
+const tandem::fuzz::Target& the_target() {
   static const tandem::fuzz::Target* target = [] {
     const tandem::fuzz::Target* t = tandem::fuzz::find_target(TANDEM_FUZZ_TARGET);
     if (t == nullptr) {
@@ -18,6 +20,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return t;
   }();
-  (void)target->run({reinterpret_cast<const char*>(data), size});
+  return *target;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
+  if (the_target().prepare != nullptr)
+    the_target().prepare();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  (void)the_target().run({reinterpret_cast<const char*>(data), size});
   return 0;
 }

@@ -11,7 +11,8 @@ std::span<const Target> targets() {
       {"experiment", experiment, "an experiment (.toml)"},
       {"path", path, "a path file (OMPL's path format)"},
       {"trace", trace, "an operator trace"},
-      {"journal", journal, "a session journal, and its replay on the built-in scene 'maze'"},
+      {"journal", journal, "a session journal, and its replay on the built-in scene 'maze'",
+       prepare_journal},
       {"protocol", protocol, "a viewer message (the WebSocket's text frames)"},
       {"step", step, "a STEP file (or IGES, when it does not start as STEP does)"},
   }};

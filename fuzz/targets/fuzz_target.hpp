@@ -20,6 +20,8 @@ struct Target {
   std::string_view name;  ///< the program is fuzz_<name>; its corpora are in fuzz/*/<name>
   TargetFunction run;
   std::string_view what;  ///< what it parses, for scripts/fuzz --list
+  /// Builds what every input uses (before the first input, outside libFuzzer's time limit), if set.
+  void (*prepare)() = nullptr;
 };
 
 bool cfg(std::string_view input);
@@ -28,6 +30,7 @@ bool experiment(std::string_view input);
 bool path(std::string_view input);
 bool trace(std::string_view input);
 bool journal(std::string_view input);
+void prepare_journal();
 bool protocol(std::string_view input);
 bool step(std::string_view input);
 

@@ -37,6 +37,10 @@ const CollisionChecker& prepared_checker() {
 
 }  // namespace
 
+void prepare_journal() {
+  (void)prepared_checker();
+}
+
 bool journal(std::string_view input) {
   fresh_scratch_folder();
   const std::filesystem::path file = write_scratch_file("session.jsonl", input);
