@@ -5,7 +5,10 @@
 
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
 #include <variant>
 
 #include "tandem/core/digest.hpp"
@@ -190,18 +193,30 @@ struct RecordAt {
   }
 };
 
+/// A whole-number field. nlohmann's get<> converts a float or a negative number to an unsigned type
+/// by a plain cast, undefined out of range (a finding of the journal fuzz target): check it first.
+template <typename T>
+T whole(const json& j, const char* key) {
+  const json& v = j.at(key);
+  if (!v.is_number_unsigned() ||
+      v.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) {
+    throw std::invalid_argument(std::string("'") + key + "' must be a whole number from 0 to " +
+                                std::to_string(std::numeric_limits<T>::max()));
+  }
+  return static_cast<T>(v.get<std::uint64_t>());
+}
+
 void read_header(const json& j, const std::filesystem::path& file, JournalHeader& h) {
   if (!j.is_object() || j.value("journal", "") != kMagic)
     throw InputError(file.string(), "not a tandem session journal (no header line)");
-  if (j.at("version").get<int>() != kVersion) {
-    throw InputError(file.string(), "journal version " +
-                                        std::to_string(j.at("version").get<int>()) +
+  if (whole<int>(j, "version") != kVersion) {
+    throw InputError(file.string(), "journal version " + std::to_string(whole<int>(j, "version")) +
                                         " (this tandem reads version 1)");
   }
   h.problem = j.at("problem").get<std::string>();
   h.problem_digest = j.at("problem_digest").get<std::string>();
   h.mode = j.at("mode").get<std::string>();
-  h.settings = settings_from_json(j.at("settings"), j.at("seed").get<std::uint64_t>());
+  h.settings = settings_from_json(j.at("settings"), whole<std::uint64_t>(j, "seed"));
   h.operator_description = j.at("operator").get<std::string>();
   h.started = j.at("started").get<std::string>();
   if (j.contains("take_out")) {
@@ -216,8 +231,8 @@ void read_header(const json& j, const std::filesystem::path& file, JournalHeader
 
 void read_operator_record(const json& j, const RecordAt& at, Journal& journal) {
   Journal::OperatorRecord r;
-  r.iteration = j.at("op").get<std::uint64_t>();
-  r.sequence = j.at("seq").get<std::uint64_t>();
+  r.iteration = whole<std::uint64_t>(j, "op");
+  r.sequence = whole<std::uint64_t>(j, "seq");
   r.time = j.at("t").get<double>();
   r.pace = j.at("pace").get<double>();
   r.device.q_device = config_from_json(j.at("q"));
@@ -226,7 +241,7 @@ void read_operator_record(const json& j, const RecordAt& at, Journal& journal) {
     throw std::invalid_argument("a velocity is 6 numbers");
   for (std::size_t k = 0; k < 6; ++k)
     r.device.velocity[static_cast<Eigen::Index>(k)] = v[k].get<double>();
-  r.device.buttons = j.at("b").get<std::uint32_t>();
+  r.device.buttons = whole<std::uint32_t>(j, "b");
   r.segment = journal.resets.size();
   if (!journal.operator_states.empty() && journal.operator_states.back().segment == r.segment &&
       r.iteration < journal.operator_states.back().iteration) {
@@ -240,9 +255,9 @@ void read_digest(const json& j, const RecordAt& at, Journal& journal) {
   if (j.contains("end"))
     d.end_status = j.at("end").get<std::string>();
   d.digest = j.at("digest").get<std::string>();
-  d.steps = j.at("steps").get<std::uint64_t>();
-  d.iterations = j.at("iterations").get<std::uint64_t>();
-  d.nodes = j.at("nodes").get<std::size_t>();
+  d.steps = whole<std::uint64_t>(j, "steps");
+  d.iterations = whole<std::uint64_t>(j, "iterations");
+  d.nodes = whole<std::size_t>(j, "nodes");
   d.segment = journal.resets.size();
   if (!journal.digests.empty() && d.steps < journal.digests.back().steps)
     at.fail("digest before the previous one");
@@ -255,16 +270,15 @@ void read_record(const json& j, const RecordAt& at, Journal& journal) {
     read_operator_record(j, at, journal);
   } else if (j.contains("params")) {
     JournalParams p;
-    p.steps = j.at("params").get<std::uint64_t>();
+    p.steps = whole<std::uint64_t>(j, "params");
     p.settings = interaction_from_json(j.at("settings"));
     if (!journal.params.empty() && p.steps < journal.params.back().steps)
       at.fail("parameters before the previous ones");
     journal.params.push_back(p);
   } else if (j.contains("event")) {
-    journal.events.push_back(
-        {j.at("steps").get<std::uint64_t>(), j.at("event").get<std::string>()});
+    journal.events.push_back({whole<std::uint64_t>(j, "steps"), j.at("event").get<std::string>()});
   } else if (j.contains("reset")) {
-    const auto steps = j.at("reset").get<std::uint64_t>();
+    const auto steps = whole<std::uint64_t>(j, "reset");
     if (!journal.resets.empty() && steps < journal.resets.back())
       at.fail("reset before the previous one");
     journal.resets.push_back(steps);
