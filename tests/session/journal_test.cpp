@@ -79,13 +79,18 @@ TEST(Journal, WritesAndReadsBackEveryRecordExactly) {
   EXPECT_EQ(j.digests[0].digest, "00000000deadbeef");
 }
 
-TEST(Journal, ATornLastLineIsIgnoredAndAMalformedLineNamed) {
-  test::TempDir dir;
+/// The header line a JournalWriter writes for the problem "p" (written in `dir`).
+std::string header_line(const test::TempDir& dir) {
   JournalHeader h;
   h.problem = "p";
   const auto file = dir.path() / "s.jsonl";
   { JournalWriter w(file, h); }
-  const std::string header = read_text_file(file);
+  return read_text_file(file);
+}
+
+TEST(Journal, ATornLastLineIsIgnoredAndAMalformedLineNamed) {
+  test::TempDir dir;
+  const std::string header = header_line(dir);
   const auto torn = dir.write("torn.jsonl", header + "{\"op\":3,\"seq\":1,\"t\":0.5,\"pa");
   EXPECT_TRUE(read_journal(torn).torn);
   const auto bad = dir.write("bad.jsonl", header + "{\"op\":3}\n");
@@ -108,11 +113,7 @@ TEST(Journal, ATornLastLineIsIgnoredAndAMalformedLineNamed) {
 // journal fuzz target): a whole-number field that is not one is the journal's error.
 TEST(Journal, RefusesAFloatOrNegativeWhereAWholeNumberGoes) {
   test::TempDir dir;
-  JournalHeader h;
-  h.problem = "p";
-  const auto file = dir.path() / "s.jsonl";
-  { JournalWriter w(file, h); }
-  const std::string header = read_text_file(file);
+  const std::string header = header_line(dir);
   for (const std::string op : {"2.01845e+21", "-3", "1.5"}) {
     const auto bad = dir.write("op.jsonl", header + "{\"op\":" + op +
                                                ",\"seq\":1,\"t\":0.5,\"pace\":0.5,\"q\":[0,0,0,"

@@ -91,10 +91,7 @@ LoadedMesh load_mesh(const std::filesystem::path& file) {
   }
   if (!std::ifstream(file).good())
     throw InputError(name, "cannot be opened for reading");
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".ply")
+  if (lower_extension(file) == ".ply")
     check_ply_header(file);
 
   Assimp::Importer importer;
