@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <mutex>
+#include <optional>
 #include <thread>
 
 #include "support/problems.hpp"
@@ -207,6 +209,65 @@ TEST(LiveSession, DigestsRecordedWhilePausedAtTheStartAndAfterAResetReplay) {
   ASSERT_EQ(journal.digests.front().steps, 0u) << "no digest while paused at the start";
   const ReplayResult replay = replay_journal(problem, journal);
   EXPECT_TRUE(replay.matched()) << "mismatch at step " << replay.mismatch_at.value_or(0);
+  EXPECT_EQ(replay.digest, format_digest(tree_digest(session.planner().trees())));
+}
+
+/// Keeps the operator's q_device as the session showed it last (observe() on the planner thread).
+class ShownOperator final : public LiveObserver {
+ public:
+  void observe(const LiveSession& session, const Planner& /*planner*/) override {
+    const std::lock_guard lock(mutex_);
+    if (const OperatorState* s = session.operator_state())
+      shown_ = s->device.q_device;
+  }
+  void restarted() override {}
+  bool shows(const Config& q) const {
+    const std::lock_guard lock(mutex_);
+    return shown_ && (shown_->t - q.t).norm() < 1e-12 && shown_->q.isApprox(q.q, 1e-12);
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::optional<Config> shown_;
+};
+
+// A viewer shows the operator where the person put the part, also while the planner does not step
+// (paused, or solved in a session that stays): the page follows the operator the session shows,
+// and would otherwise put the part back where the planner last saw it. What is only shown is not
+// journaled: the session still replays to the identical tree.
+TEST(LiveSession, WhileThePlannerDoesNotStepTheOperatorShownIsWhereThePersonPutIt) {
+  const Problem problem = detour_problem();
+  test::TempDir dir;
+  LiveOptions options = journaled(dir, 0.05);
+  options.stay = true;
+  options.spacemouse = false;
+  options.start_paused = true;
+  RunSpec spec = live_spec(8);
+  spec.settings.interaction.alpha = 1.0;  // the computer alone: solves soon
+  LiveSession session(problem, spec, options);
+  ShownOperator shown;
+  session.set_observer(&shown);
+  std::thread planner([&] { session.run(); });
+
+  Config held = problem.start;
+  held.t.y() += 0.2;
+  session.operator_input().set_pose(held, 1);
+  EXPECT_TRUE(eventually([&] { return shown.shows(held); })) << "paused";
+  EXPECT_EQ(session.progress().steps, 0u);
+  session.resume();
+  ASSERT_TRUE(eventually([&] { return session.progress().status == PlannerStatus::solved; }));
+  const std::uint64_t solved_at = session.progress().steps;
+  held.t.x() += 0.1;
+  session.operator_input().set_pose(held, 2);
+  EXPECT_TRUE(eventually([&] { return shown.shows(held); })) << "solved";
+  session.stop();
+  planner.join();
+  session.set_observer(nullptr);
+  EXPECT_EQ(session.steps(), solved_at);
+
+  const ReplayResult replay = replay_journal(problem, read_journal(options.journal));
+  EXPECT_TRUE(replay.matched()) << "mismatch at step " << replay.mismatch_at.value_or(0);
+  EXPECT_EQ(replay.status, PlannerStatus::solved);
   EXPECT_EQ(replay.digest, format_digest(tree_digest(session.planner().trees())));
 }
 

@@ -10,7 +10,7 @@
 //   iteration at which the planner saw a new state, that state: with the planner's seed, this
 //   record replays the run exactly.
 //
-// Threading: at() is called by the planner thread only.
+// Threading: at() and peek() are called by the planner thread only.
 
 #include <cstdint>
 #include <memory>
@@ -77,6 +77,10 @@ class LiveFeed final : public OperatorFeed {
                     LatestValue<double>* roadmap_distance = nullptr, bool keep_record = true)
       : channel_(channel), roadmap_distance_(roadmap_distance), keep_record_(keep_record) {}
   const OperatorState* at(std::uint64_t iteration, const RoadmapView* roadmap = nullptr) override;
+  /// The latest state published, without the planner taking it (nothing recorded): what to show
+  /// of the operator while the planner does not step (paused, solved, out of time). The planner's
+  /// next at() still takes and records it.
+  const OperatorState* peek() { return channel_.latest(); }
   const std::vector<FeedRecord>& record() const { return record_; }
   /// Hands over the record so far and starts a new one (a journal writes it away as it grows).
   std::vector<FeedRecord> take_record() { return std::exchange(record_, {}); }

@@ -174,6 +174,14 @@ void LiveSession::journal_feed() {
   have_state_ = true;
 }
 
+void LiveSession::show_idle_operator() {
+  // Not journaled: the planner takes (and the journal records) this state at its next step.
+  if (const OperatorState* s = feed_.peek()) {
+    last_state_ = *s;
+    have_state_ = true;
+  }
+}
+
 void LiveSession::measure_latency() {
   // The first operator node grown after a browser event reached the session: its latency.
   // Called after a step that added operator nodes (see run()).
@@ -323,6 +331,7 @@ PlannerStatus LiveSession::run(const ProgressCallback& progress) {
       if (++loop.since_check < 64 && !loop.stepped_by_hand && status_ == PlannerStatus::running)
         continue;
     } else {
+      show_idle_operator();
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     loop.since_check = 0;

@@ -119,7 +119,9 @@ class LiveSession {
   // Planner thread only (the observer's callbacks run there).
   const Planner& planner() const { return *planner_; }
   std::uint64_t steps() const { return steps_; }
-  /// The operator state the planner used last, if any.
+  /// The operator's state, if any: the one the planner used last while it steps; while it does
+  /// not (paused, solved, out of time), the operator thread's latest, so that a viewer shows the
+  /// operator where the person put it.
   const OperatorState* operator_state() const { return have_state_ ? &last_state_ : nullptr; }
   /// The I-RRT's latest guidance force, if the planner publishes one.
   const Guidance* guidance() const { return have_guidance_ ? &last_guidance_ : nullptr; }
@@ -139,6 +141,7 @@ class LiveSession {
   void apply_commands();
   void start_planner();
   void journal_feed();
+  void show_idle_operator();
   void journal_digest(const std::optional<std::string>& end_status);
   void measure_latency();
 
