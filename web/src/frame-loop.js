@@ -25,8 +25,16 @@ export class FrameLoop {
     this.fpsSince = performance.now();
     this.lastFrame = performance.now();
     this.lastRender = 0;
+    this.updates = []; // (now) => void, each animation frame, before drawing
+    this.drawn = []; // () => void, after each frame drawn
     this.frame = this.frame.bind(this);
   }
+
+  /** Runs `fn(now)` each animation frame, before the frame is drawn (if it is). */
+  onUpdate(fn) { this.updates.push(fn); }
+
+  /** Runs `fn()` after each frame drawn. */
+  onDrawn(fn) { this.drawn.push(fn); }
 
   /** Something changed: the next frame is drawn. */
   touch() { this.dirty = true; }
@@ -55,6 +63,7 @@ export class FrameLoop {
     this.view.showOperatorCues(this.operator);
     this.playback.advance(dt);
     this.view.render(now);
+    for (const fn of this.drawn) fn();
     ++this.frames;
     ++this.fpsFrames;
   }
@@ -66,6 +75,7 @@ export class FrameLoop {
     if (view.orbit.autoRotate) view.orbit.update(dt);
     input.follow(this.operator, now);
     this.xr.update(now, this.operator);
+    for (const fn of this.updates) fn(now);
     if (now - this.fpsSince >= 1000) {
       this.fps = (1000 * this.fpsFrames) / (now - this.fpsSince);
       this.fpsFrames = 0;

@@ -2,12 +2,13 @@
 // one (a software renderer such as SwiftShader, where each line segment costs a fixed setup time,
 // about 0.35 µs, so 100k edges take 40–100 ms, and each full-screen pass about 11 ms at 960×800),
 // `layered`, on two canvases, one over the other:
-//  - the static canvas (opaque obstacles, grid, axes, the trees, the solution line) keeps its
+//  - the static canvas (opaque obstacles and their section caps, grid, axes, the trees) keeps its
 //    image between frames (preserveDrawingBuffer); while the camera is still, only the edges and
 //    nodes that came since the last frame are drawn into it, depth-tested against what is there,
 //    and when nothing came it is not touched, so a frame costs the same with 100k edges as with 100;
-//  - the dynamic canvas over it (transparent; the part, the ghosts, the contact plane, the arrows,
-//    the gizmo, anything transparent) is drawn every frame, after the obstacles have been drawn
+//  - the dynamic canvas over it (transparent; the part, the ghosts, the solution line and its
+//    ends, the contact plane, the arrows, the gizmo, the section planes' outlines, anything
+//    transparent) is drawn every frame, after the opaque obstacles have been drawn
 //    into its depth buffer only, so that obstacles hide the part where they are in front of it
 //    (the trees' thin lines do not: the part and the start and goal ghosts are drawn over them);
 //  - while the camera moves, there is nothing to keep: everything is drawn on the static canvas,
@@ -37,7 +38,9 @@ export class FrameRenderer {
     this.layered = layered;
     this.lodEdges = lodEdges;
     // The static canvas (or the only one), whose element takes the pointer events.
-    this.renderer = new THREE.WebGLRenderer({ antialias, preserveDrawingBuffer: layered });
+    // A stencil for the section planes' caps (section-planes.js); clipping per material.
+    this.renderer = new THREE.WebGLRenderer({ antialias, preserveDrawingBuffer: layered, stencil: true });
+    this.renderer.localClippingEnabled = true;
     this.renderer.setPixelRatio(pixelRatio);
     this.renderer.setClearColor(background, 1);
     container.appendChild(this.renderer.domElement);
@@ -57,15 +60,28 @@ export class FrameRenderer {
     this.overlay.setPixelRatio(pixelRatio);
     this.overlay.setClearColor(0x000000, 0);
     this.overlay.autoClear = false;
+    this.overlay.localClippingEnabled = true;
     Object.assign(this.overlay.domElement.style, { position: 'absolute', left: '0', top: '0', pointerEvents: 'none' });
     container.appendChild(this.overlay.domElement);
     this.depthOnly = new THREE.MeshBasicMaterial({ colorWrite: false, side: THREE.DoubleSide });
   }
 
+  /** The section planes (THREE.Plane) that cut the obstacles, in their depth pass too. */
+  setClipping(planes) {
+    if (this.depthOnly) {
+      this.depthOnly.clippingPlanes = planes.length ? planes : null;
+      this.depthOnly.needsUpdate = true;
+    }
+    this.valid = false;
+  }
+
+  /** The canvases a picture of the view is made of, bottom first. */
+  get canvases() { return this.overlay ? [this.renderer.domElement, this.overlay.domElement] : [this.renderer.domElement]; }
+
   /** The canvas that takes the pointer events (for the camera and the gizmo). */
   get domElement() { return this.renderer.domElement; }
 
-  /** The static layer changed as a whole (the scene, the solution line, colours, a reset). */
+  /** The static layer changed as a whole (the scene, the obstacles' looks, colours, a reset). */
   invalidate() { this.valid = false; }
 
   /** The camera moved. */

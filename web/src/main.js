@@ -1,5 +1,6 @@
 // tandem's live viewer: the scene, the part at q_device, both trees growing, the contact plane,
-// the guidance force, the solution with playback; the browser's operator inputs and the tuning.
+// the guidance force, the solution with playback; the browser's operator inputs and the tuning;
+// the objects list, x-ray, section planes, framing, stills and videos of the view.
 // This module wires the pieces; the URL's options:
 //   ?token=…          the session's token (printed with the URL)
 //   ?layers=on|off    draw in layers (default: on with a software renderer, see layers.js)
@@ -17,6 +18,12 @@ import { AssemblyPicker } from './assembly-picker.js';
 import { OperatorInput } from './operator-input.js';
 import { FrameLoop } from './frame-loop.js';
 import { VrOperator } from './xr.js';
+import { ObstacleLooks } from './obstacle-looks.js';
+import { ObjectsPanel } from './objects-panel.js';
+import { SectionPlanes } from './section-planes.js';
+import { CameraFraming } from './camera-framing.js';
+import { Recorder } from './recorder.js';
+import { ViewPanel } from './view-panel.js';
 import { exposePageApi } from './page-api.js';
 
 function start(query) {
@@ -38,6 +45,14 @@ function start(query) {
   $('show-nodes').onchange = (e) => { view.trees.setShowNodes(e.target.value); touch(); };
 
   const picker = new AssemblyPicker(view, { send: (m) => connection.send(m), touch, notify });
+  const looks = new ObstacleLooks(view, touch);
+  const objects = new ObjectsPanel(view, looks, () => picker.active);
+  const sections = new SectionPlanes(view, touch);
+  const framing = new CameraFraming(view, { looks, sections, playback, changed: touch });
+  const recorder = new Recorder(view, { lines: () => panel.overlayLines(), notify });
+  new ViewPanel({ looks, sections, framing, recorder, playback, notify });
+  loop.onUpdate((now) => { framing.update(now); sections.update(); });
+  loop.onDrawn(() => recorder.frameDrawn());
   let hello = null, scene = null;
   const restart = (generation) => { view.trees.clear(generation); playback.clear(); };
   const messages = {
@@ -61,12 +76,16 @@ function start(query) {
     return ok;
   };
   const xr = new VrOperator(view, input, { notify });
-  exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, hello: () => hello });
+  exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, looks, sections,
+    framing, recorder, hello: () => hello });
   connection.scene()
     .then((s) => {
       scene = s;
       panel.setProblem(s.name);
       view.load(s);
+      looks.load(s.name);
+      objects.build();
+      recorder.problem = s.name;
       connection.open({ nodes, messages, state: (text, cls) => panel.setConnection(text, cls) });
       loop.start(input, playback, xr);
     })

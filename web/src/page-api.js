@@ -4,9 +4,11 @@
 /**
  * @param parts the page's pieces: `connection`, `view` (SceneView), `loop` (FrameLoop), `panel`
  *   (StatusPanel), `input` (OperatorInput), `playback`, `products` (SolutionProducts), `picker`
- *   (AssemblyPicker), `xr` (VrOperator), `hello` (() => the last hello message)
+ *   (AssemblyPicker), `xr` (VrOperator), `looks` (ObstacleLooks), `sections` (SectionPlanes),
+ *   `framing` (CameraFraming), `recorder` (Recorder), `hello` (() => the last hello message)
  */
-export function exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, hello }) {
+export function exposePageApi({ connection, view, loop, panel, input, playback, products, picker, xr, looks,
+  sections, framing, recorder, hello }) {
   window.tandem = {
     get connected() { return connection.connected; },
     get hello() { return hello(); },
@@ -24,10 +26,29 @@ export function exposePageApi({ connection, view, loop, panel, input, playback, 
     /** The solution's clearance as the server sent it (null until then), and the line's colours
      * ([r, g, b] per vertex; null while it is drawn plain). */
     get clearance() { return products.clearance; },
-    solutionLineColours: () => {
-      const c = view.pathLine?.geometry.getAttribute('color');
-      return c ? Array.from({ length: c.count }, (_, i) => [c.getX(i), c.getY(i), c.getZ(i)]) : null;
+    solutionLineColours: () => view.pathLine?.userData.colours ?? null,
+    /** The solution line: its width in pixels and whether x-ray draws it in front; null: none. */
+    solutionLine: () => (view.pathLine ? { width: view.pathLine.material.linewidth, inFront: view.inFront } : null),
+    /** How each obstacle is drawn: {name: {shown, opacity}}; x-ray; the obstacles hiding the part. */
+    obstacles: () => Object.fromEntries(view.obstacleMeshes.map((m) => [m.name, looks.effective(m.name)])),
+    get xray() { return looks.xray; },
+    get hiding() { return [...looks.hiding]; },
+    get selectedObstacle() { return view.obstacleMeshes.find((m) => m.material.emissive.getHex() !== 0)?.name ?? null; },
+    /** The section planes: [{normal, constant}]. */
+    sections: () => sections.planes.map(({ plane }) => ({ normal: plane.normal.toArray(), constant: plane.constant })),
+    /** The part's box on the page (CSS pixels) and the view's box. */
+    partBox: () => view.screenBoxOf(view.part),
+    viewBox: () => {
+      const r = view.layers.domElement.getBoundingClientRect();
+      return { left: r.left, top: r.top, right: r.right, bottom: r.bottom };
     },
+    /** Moves the part as a drag would (the pose goes to the server at once). */
+    movePart: (q) => { view.setPartPose(q); input.moved(performance.now(), true); },
+    get treesLook() { return view.trees.look; },
+    get following() { return framing.follow; },
+    /** The last recording: {size, type, url, seconds}, or null; whether one is under way. */
+    get recording() { return recorder.last; },
+    get recordingNow() { return recorder.recording; },
     /** Choosing a part of an assembly: whether the page is, and the part selected. */
     get picking() { return picker.active; },
     get pickedPart() { return picker.selected; },

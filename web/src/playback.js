@@ -1,5 +1,6 @@
 // The solution: its line in the scene, and its playback (a ghost of the part going along it, eight
-// seconds from start to goal) with the play button and the scrubber.
+// seconds from start to goal) with the play button and the scrubber; the trees are shown, dimmed
+// or hidden while it plays. Played once from the start (for a recording), it stops at the goal.
 import { $ } from './dom.js';
 
 export class Playback {
@@ -17,13 +18,12 @@ export class Playback {
     this.solution = [];
     this.playing = false;
     this.t = 0; // in [0, 1]
-    $('play').onclick = () => {
-      this.playing = !this.playing;
-      $('play').textContent = this.playing ? 'pause path' : 'play path';
-    };
+    this.treesWhilePlaying = 'dim';
+    this.onEnd = null; // played once: told at the goal
+    $('play').onclick = () => this.setPlaying(!this.playing);
     $('scrub').oninput = (e) => {
       this.touch();
-      this.playing = false;
+      this.setPlaying(false);
       this.t = e.target.value / 1000;
       this.showAt(this.t);
     };
@@ -35,7 +35,7 @@ export class Playback {
     this.solution = [];
     this.view.setSolutionLine(null);
     this.products.clear();
-    this.playing = false;
+    this.setPlaying(false);
     $('path-box').hidden = true;
   }
 
@@ -59,9 +59,39 @@ export class Playback {
     this.view.showPathGhost(s[Math.max(i, 0)], s[Math.min(i + 1, s.length - 1)], f);
   }
 
+  setPlaying(on) {
+    this.playing = on;
+    if (!on) this.onEnd = null;
+    $('play').textContent = on ? 'pause path' : 'play path';
+    this.view.trees.setLook(on ? this.treesWhilePlaying : 'shown');
+    this.view.layers.invalidate();
+    this.touch();
+  }
+
+  /** How the trees look while the path plays: 'shown', 'dim' or 'hide'. */
+  setTreesWhilePlaying(look) {
+    this.treesWhilePlaying = look;
+    if (this.playing) this.setPlaying(true);
+  }
+
+  /** Plays the path once from its start; `onEnd` is told at the goal, where it stops. */
+  playFromStart(onEnd) {
+    this.t = 0;
+    this.setPlaying(true);
+    this.onEnd = onEnd;
+  }
+
   /** A frame's step of the playback, dt seconds on. */
   advance(dt) {
     if (!this.playing || this.solution.length <= 1) return;
+    if (this.onEnd && this.t + dt / 8 >= 1) {
+      const end = this.onEnd;
+      this.t = 1;
+      this.showAt(1);
+      this.setPlaying(false);
+      end();
+      return;
+    }
     this.t = (this.t + dt / 8) % 1;
     $('scrub').value = String(Math.round(this.t * 1000));
     this.showAt(this.t);

@@ -1,10 +1,15 @@
 // The three.js scene: the camera and its orbit controls, the obstacles, the part at q_device, the
 // start and goal ghosts, both trees, the contact plane and its normal, the guidance force, the
-// solution line and its playback ghost, the drag gizmo; drawn by a FrameRenderer (layers.js).
+// solution (a thick line in screen pixels, over the trees, with its start and goal marked) and its
+// playback ghost, the drag gizmo; drawn by a FrameRenderer (layers.js). How the obstacles look is
+// chosen in obstacle-looks.js, and they are cut by section-planes.js.
 // Conventions: right-handed, z up, metres (scene units); orbit camera, grid, axes.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { TransformControls } from 'three/examples/jsm/controls/TransformControls.js';
+import { Line2 } from 'three/examples/jsm/lines/Line2.js';
+import { LineGeometry } from 'three/examples/jsm/lines/LineGeometry.js';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { Trees } from './trees.js';
 import { FrameRenderer } from './layers.js';
 
@@ -30,8 +35,15 @@ function meshOf(body, opacity = 1) {
   // Lambert shading: cheap enough for a software renderer, and CAD parts need no more.
   const m = new THREE.MeshLambertMaterial({ color: new THREE.Color(r, gr, b),
     transparent: alpha < 1, opacity: alpha, side: THREE.DoubleSide });
+  m.userData.baseOpacity = alpha;
   return new THREE.Mesh(g, m);
 }
+
+/** The solution line's width, in CSS pixels, and the start and goal markers' colours. */
+const PATH_WIDTH = 5;
+const START_COLOUR = 0x60a5fa, GOAL_COLOUR = 0x4ade80;
+/** The render order of what x-ray draws in front of the see-through obstacles. */
+const IN_FRONT = 10;
 
 /** Places an object at a configuration [x y z qx qy qz qw]. */
 function setPose(object, q) {
@@ -69,7 +81,9 @@ export class SceneView {
     this.scene.add(sun);
     this.trees = new Trees(this.layers.staticRoot);
     this.extent = 10;
-    this.overlaid = []; // meshes of the scene in the dynamic layer
+    this.ghosts = []; // the start and goal ghosts (dynamic layer)
+    this.obstacleMeshes = [];
+    this.inFront = false; // x-ray: the part, the path and the markers over everything
     this.makeDynamic();
     /** Called when the picture changed (the camera, the gizmo, the window's size). */
     this.onChange = () => {};
@@ -95,21 +109,20 @@ export class SceneView {
     this.forceArrow = arrow(new THREE.Vector3(1, 0, 0), 0xf472b6);
     this.gizmo = new TransformControls(this.camera, this.layers.domElement);
     this.gizmo.setSize(0.8);
-    root.add(this.part, this.pathGhost, this.planeMesh, this.normalArrow, this.forceArrow, this.gizmo.getHelper());
+    this.markers = new THREE.Group();
+    this.markers.visible = false;
+    root.add(this.part, this.pathGhost, this.planeMesh, this.normalArrow, this.forceArrow, this.markers,
+      this.gizmo.getHelper());
   }
 
   /** Builds the scene of /api/scene: obstacles, part, ghosts, grid and axes; frames the camera. */
   load(s) {
     const { dynamicRoot } = this.layers;
-    // Transparent obstacles go with the dynamic layer: drawn after everything opaque, as three.js
-    // orders them.
-    this.obstacleMeshes = [];
     for (const body of s.obstacles) {
       const m = meshOf(body);
       m.name = body.name;
       this.obstacleMeshes.push(m);
-      (m.material.transparent ? dynamicRoot : this.layers.obstacles).add(m);
-      if (m.material.transparent) this.overlaid.push(m);
+      this.placeObstacle(m, m.material.transparent);
     }
     this.part.add(meshOf(s.object));
     this.pathGhost.add(meshOf(s.object, 0.45));
@@ -117,7 +130,7 @@ export class SceneView {
       const m = meshOf({ ...s.object, color: colour }, 0.3);
       setPose(m, q);
       dynamicRoot.add(m);
-      this.overlaid.push(m);
+      this.ghosts.push(m);
     };
     ghost(s.start, [0.3, 0.6, 1, 1]);
     ghost(s.goal, [0.3, 1, 0.5, 1]);
@@ -149,9 +162,60 @@ export class SceneView {
     orbit.update();
   }
 
+  /** Transparent obstacles go with the dynamic layer, drawn after everything opaque (as three.js
+   * orders them); opaque ones with the static layer's obstacles. */
+  placeObstacle(mesh, transparent) {
+    const parent = transparent ? this.layers.dynamicRoot : this.layers.obstacles;
+    if (mesh.parent !== parent) parent.add(mesh);
+    this.layers.invalidate();
+  }
+
+  /** X-ray: the part, the path and its markers drawn over everything (after the see-through
+   * obstacles, without the depth test); off: as everything else. */
+  setInFront(on) {
+    this.inFront = on;
+    const objects = [this.part, this.pathGhost, this.markers, this.pathLine].filter(Boolean);
+    for (const o of objects) {
+      o.renderOrder = on ? IN_FRONT : 0;
+      o.traverse((m) => {
+        if (!m.material) return;
+        const base = m.material.userData.baseOpacity ?? 1;
+        m.material.transparent = on || base < 1;
+        m.material.depthTest = !on;
+        m.material.needsUpdate = true;
+      });
+    }
+    this.layers.invalidate();
+  }
+
+  /** Turns the camera, keeping its direction, so that a box (Box3) fills about `fill` of the
+   * view, centred. */
+  frameBox(box, fill = 0.6) {
+    const { camera, orbit } = this;
+    const centre = box.getCenter(new THREE.Vector3());
+    const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, this.extent * 1e-3);
+    const half = THREE.MathUtils.degToRad(camera.fov / 2);
+    const fit = Math.min(Math.tan(half), Math.tan(half) * camera.aspect) * fill;
+    const distance = radius / Math.sin(Math.atan(fit));
+    const dir = camera.position.clone().sub(orbit.target).normalize();
+    orbit.target.copy(centre);
+    camera.position.copy(centre).addScaledVector(dir, distance);
+    camera.near = Math.max(distance / 1000, this.extent / 10000);
+    camera.updateProjectionMatrix();
+    orbit.update();
+  }
+
+  /** Moves the camera and its target by the same offset (to follow what moves). */
+  shiftCamera(offset) {
+    this.camera.position.add(offset);
+    this.orbit.target.add(offset);
+    this.orbit.update();
+  }
+
   resize() {
     const w = this.container.clientWidth, h = this.container.clientHeight;
     this.layers.setSize(w, h);
+    if (this.pathLine) this.pathLine.material.resolution.set(w, h);
     this.camera.aspect = w / Math.max(h, 1);
     this.camera.updateProjectionMatrix();
   }
@@ -195,24 +259,48 @@ export class SceneView {
   }
 
   /** The solution's line through its positions (a path of configurations), or none; no ghost.
-   * `coloured`: {points, colours} (solution-products.js) to draw it coloured by clearance. */
+   * `coloured`: {points, colours} (solution-products.js) to draw it coloured by clearance. The
+   * line is PATH_WIDTH pixels wide whatever the distance, in the dynamic layer (over the trees), and
+   * the start and goal are marked with spheres. */
   setSolutionLine(path, coloured = null) {
-    const { staticRoot } = this.layers;
     if (this.pathLine) {
-      staticRoot.remove(this.pathLine);
+      this.pathLine.parent.remove(this.pathLine);
       this.pathLine.geometry.dispose();
+      this.pathLine.material.dispose();
       this.pathLine = null;
     }
+    this.markers.clear();
+    this.markers.visible = false;
     if (path) {
       const points = coloured?.points ?? path.map((q) => new THREE.Vector3(q[0], q[1], q[2]));
-      const g = new THREE.BufferGeometry().setFromPoints(points);
-      if (coloured) g.setAttribute('color', new THREE.Float32BufferAttribute(coloured.colours.flatMap((c) => [c.r, c.g, c.b]), 3));
-      this.pathLine = new THREE.Line(g, new THREE.LineBasicMaterial(coloured ? { vertexColors: true } : { color: 0xfacc15 }));
+      const g = new LineGeometry().setPositions(points.flatMap((p) => [p.x, p.y, p.z]));
+      const colours = coloured?.colours.map((c) => [c.r, c.g, c.b]) ?? null;
+      if (colours) g.setColors(colours.flat());
+      const m = new LineMaterial({ color: colours ? 0xffffff : 0xfacc15, vertexColors: Boolean(colours),
+        linewidth: PATH_WIDTH, worldUnits: false });
+      m.resolution.set(this.container.clientWidth, this.container.clientHeight);
+      this.pathLine = new Line2(g, m);
+      this.pathLine.computeLineDistances();
       this.pathLine.name = coloured ? 'solution-clearance' : 'solution';
-      staticRoot.add(this.pathLine);
+      this.pathLine.userData.colours = colours;
+      this.pathLine.userData.points = points;
+      this.layers.dynamicRoot.add(this.pathLine);
+      this.markEnds(points[0], points[points.length - 1]);
     }
+    this.setInFront(this.inFront);
     this.layers.invalidate();
     this.pathGhost.visible = false;
+  }
+
+  /** Spheres at the path's start and goal. */
+  markEnds(start, goal) {
+    const r = this.extent * 0.006;
+    for (const [p, colour] of [[start, START_COLOUR], [goal, GOAL_COLOUR]]) {
+      const s = new THREE.Mesh(new THREE.SphereGeometry(r, 16, 12), new THREE.MeshBasicMaterial({ color: colour }));
+      s.position.copy(p);
+      this.markers.add(s);
+    }
+    this.markers.visible = true;
   }
 
   /** The name of the obstacle under a point of the page (CSS pixels), or null. */
@@ -221,7 +309,7 @@ export class SceneView {
     const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, 1 - ((clientY - r.top) / r.height) * 2);
     const ray = new THREE.Raycaster();
     ray.setFromCamera(ndc, this.camera);
-    return ray.intersectObjects(this.obstacleMeshes, false)[0]?.object.name ?? null;
+    return ray.intersectObjects(this.obstacleMeshes.filter((m) => m.visible), false)[0]?.object.name ?? null;
   }
 
   /** Marks one obstacle (by name) with a glow; null: none. */
@@ -271,6 +359,9 @@ export class SceneView {
   }
 
   /** The meshes that the layered drawing draws over the trees (layers.js): the part, the start and
-   * goal ghosts, transparent obstacles. */
-  overlaidObjects() { return [this.part, ...this.overlaid]; }
+   * goal ghosts, transparent obstacles, the solution and its markers. */
+  overlaidObjects() {
+    const transparent = this.obstacleMeshes.filter((m) => m.visible && m.parent === this.layers.dynamicRoot);
+    return [this.part, ...this.ghosts, ...transparent, ...(this.pathLine ? [this.pathLine, this.markers] : [])];
+  }
 }

@@ -33,6 +33,17 @@ export class StatusPanel {
     this.showMessage(`refused: ${message}`, 'bad');
   }
 
+  /** The status in a few lines (drawn over a recording, recorder.js). */
+  overlayLines() {
+    const m = this.status;
+    const lines = [`tandem ${$('problem').textContent}`];
+    if (!m) return lines;
+    const src = m.nodes_by_source ?? [0, 0, 0, 0];
+    return [...lines, `${m.status} · ${m.mode} · ${fmt(m.elapsed_s, 1)} s`,
+      `${fmt(m.nodes)} nodes (random ${fmt(src[1])}, operator ${fmt(src[2])}, contact ${fmt(src[3])})`,
+      typeof m.alpha === 'number' ? `α ${fmt(m.alpha, 2)}` : ''].filter(Boolean);
+  }
+
   /** A `status` message. */
   show(m) {
     this.status = m;
@@ -53,7 +64,8 @@ export class StatusPanel {
       ['operator loop', m.operator_rate_hz === undefined ? '—' : `${fmt(m.operator_rate_hz)} Hz`],
       ['input', m.input],
       ['input → node', m.input_latency_id ? `${fmt(m.input_latency_ms, 1)} ms` : '—'],
-      ['viewer', `${fmt(fps)} fps${drawnEdges < edges ? `, ${fmt(drawnEdges)} edges while turning` : ''}`],
+      // The frames drawn over the last second: none when nothing changed.
+      ['viewer', `${fps < 0.5 ? 'idle' : `${fmt(fps)} fps`}${drawnEdges < edges ? `, ${fmt(drawnEdges)} edges while turning` : ''}`],
     ];
     $('status').innerHTML = rows.map(([k, v]) => `<tr><td>${k}</td><td>${v}</td></tr>`).join('');
   }

@@ -225,6 +225,23 @@ export class Trees {
     this.colourBy = 'source';
     this.showNodes = 'auto';
     this.generation = 0;
+    this.look = 'shown'; // 'shown', 'dim' or 'hide' (while the path plays, playback.js)
+  }
+  /** The trees 'shown', 'dim' (faint) or 'hide'. */
+  setLook(look) {
+    if (look === this.look) return;
+    this.look = look;
+    this.group.visible = look !== 'hide';
+    for (const v of this.views) this.applyLook(v);
+    this.changed = true;
+  }
+  applyLook(v) {
+    for (const m of [v.lines.material, v.points.material]) {
+      m.transparent = this.look === 'dim';
+      m.opacity = this.look === 'dim' ? 0.12 : 1;
+      m.depthWrite = this.look !== 'dim';
+      m.needsUpdate = true;
+    }
   }
   /** 'auto' (nodes drawn up to AUTO_NODES per tree: a software renderer spends most of a frame
    * on point sprites), 'on' or 'off'. Edges are always drawn. */
@@ -245,7 +262,10 @@ export class Trees {
   }
   add(batch) {
     if (batch.generation !== this.generation) return true; // an old generation's leftovers
-    while (this.views.length <= batch.tree) this.views.push(new TreeView(this.group, this.views.length));
+    while (this.views.length <= batch.tree) {
+      this.views.push(new TreeView(this.group, this.views.length));
+      this.applyLook(this.views[this.views.length - 1]);
+    }
     const v = this.views[batch.tree];
     const ok = v.add(batch, this.colourBy);
     this.updateNodes(v);

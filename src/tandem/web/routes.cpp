@@ -131,9 +131,10 @@ Routes::Response Routes::static_file(const http::request<http::string_body>& req
   if (path == "/index.html") {
     res.set(http::field::set_cookie,
             "tandem_token=" + token_ + "; Path=/; HttpOnly; SameSite=Strict");
-    res.set("Content-Security-Policy",
-            "default-src 'self'; connect-src 'self' ws://" + std::string(req[http::field::host]) +
-                "; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:");
+    res.set("Content-Security-Policy", "default-src 'self'; connect-src 'self' ws://" +
+                                           std::string(req[http::field::host]) +
+                                           "; style-src 'self' 'unsafe-inline'; img-src 'self' "
+                                           "data: blob:; media-src 'self' blob:");
   }
   return finish(req, std::move(res), http::status::ok, mime_type(file), std::move(*body));
 }
