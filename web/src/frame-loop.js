@@ -18,6 +18,7 @@ export class FrameLoop {
     this.xr = null;
     this.dirty = true;
     this.operator = null; // the last `operator` message
+    this.operatorShown = ''; // what it shows (q, contact, plane, force)
     this.redrawAlways = false; // a frame every time, for measuring
     this.fps = 0;
     this.frames = 0;
@@ -27,6 +28,7 @@ export class FrameLoop {
     this.lastRender = 0;
     this.updates = []; // (now) => void, each animation frame, before drawing
     this.drawn = []; // () => void, after each frame drawn
+    this.fpsListeners = []; // (fps) => void, each second
     this.frame = this.frame.bind(this);
   }
 
@@ -36,13 +38,18 @@ export class FrameLoop {
   /** Runs `fn()` after each frame drawn. */
   onDrawn(fn) { this.drawn.push(fn); }
 
+  /** Runs `fn(fps)` each second, with the frames drawn over that second. */
+  onFps(fn) { this.fpsListeners.push(fn); }
+
   /** Something changed: the next frame is drawn. */
   touch() { this.dirty = true; }
 
-  /** An `operator` message. */
+  /** An `operator` message: a frame is drawn if what it shows changed (not its time alone). */
   setOperator(m) {
+    const shown = JSON.stringify([m.q, m.contact, m.plane, m.force]);
+    if (shown !== this.operatorShown) this.dirty = true;
+    this.operatorShown = shown;
     this.operator = m;
-    this.dirty = true;
   }
 
   /** Runs the loop, with the OperatorInput, the Playback and the VrOperator. */
@@ -80,6 +87,7 @@ export class FrameLoop {
       this.fps = (1000 * this.fpsFrames) / (now - this.fpsSince);
       this.fpsFrames = 0;
       this.fpsSince = now;
+      for (const fn of this.fpsListeners) fn(this.fps);
     }
   }
 

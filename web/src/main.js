@@ -53,6 +53,7 @@ function start(query) {
   new ViewPanel({ looks, sections, framing, recorder, playback, notify });
   loop.onUpdate((now) => { framing.update(now); sections.update(); });
   loop.onDrawn(() => recorder.frameDrawn());
+  loop.onFps(() => panel.refresh());
   let hello = null, scene = null;
   const restart = (generation) => { view.trees.clear(generation); playback.clear(); };
   const messages = {

@@ -44,6 +44,9 @@ export class StatusPanel {
       typeof m.alpha === 'number' ? `α ${fmt(m.alpha, 2)}` : ''].filter(Boolean);
   }
 
+  /** The viewer's own row, each second (the session's rows wait for its next status). */
+  refresh() { if (this.status) this.show(this.status); }
+
   /** A `status` message. */
   show(m) {
     this.status = m;

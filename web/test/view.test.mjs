@@ -80,10 +80,12 @@ const count = (pixels, is) => {
   return n;
 };
 
-/** A frame drawn after now (the picture shows what was just changed). */
+/** Frames drawn after now (the picture shows what was just changed; an idle page draws none, so
+ * a frame is asked for every time meanwhile). */
 async function settle(page) {
-  const frames = await page.evaluate(() => window.tandem.frames);
+  const frames = await page.evaluate(() => { window.tandem.redraw(true); return window.tandem.frames; });
   await waitFor(page, (n) => window.tandem.frames > n + 1, frames);
+  await page.evaluate(() => window.tandem.redraw(false));
   await sleep(300);
 }
 
@@ -137,6 +139,15 @@ test('x-ray and a section plane show the part inside environment 2\'s tube; "fra
     // The part's pixels, tinted by the see-through tube: not the tube's where the tube hid it.
     const changed = await shareInPartBox(page, auto, (p, k) => Math.max(...p.map((v, c) => Math.abs(v - hidden.data[4 * k + c]))) > 40);
     assert.ok(changed > 0.2, `the part shows through what hides it: ${changed} of its box changed`);
+
+    // Following the part: moved, it stays where it was on the page.
+    await page.click('#follow');
+    const was = await page.evaluate(() => window.tandem.partScreen());
+    const moved = [IN_TUBE[0] + 0.3, ...IN_TUBE.slice(1)];
+    await page.evaluate((q) => window.tandem.movePart(q), moved);
+    await settle(page);
+    const now = await page.evaluate(() => window.tandem.partScreen());
+    assert.ok(Math.hypot(now.x - was.x, now.y - was.y) < 2, `followed: ${JSON.stringify(was)} then ${JSON.stringify(now)}`);
     assert.deepEqual(page.logs.filter((l) => l.startsWith('page error')), []);
   } finally {
     await stopTandem(run);
@@ -179,6 +190,8 @@ test('the objects list: hiding an obstacle removes its pixels, see-through and i
     assert.equal(kept.tube.shown, false, 'the tube stays hidden after a reload');
     assert.deepEqual(kept.floor, { shown: true, opacity: 0.4 });
     assert.equal(await page.locator('#objects tr[data-name=tube] [data-do=shown]').isChecked(), false);
+    // Nothing changes in the paused session: no frame is drawn, and the status row says so.
+    await waitFor(page, () => /viewer\s*idle/.test(document.getElementById("status").textContent));
   } finally {
     await stopTandem(run);
   }
@@ -225,6 +238,14 @@ test('the solution stands out and plays with the trees dimmed; a recorded WebM o
     await download.saveAs(file);
     const { statSync } = await import('node:fs');
     assert.ok(statSync(file).size > 10000);
+
+    // "record the path": the path played once, from its start to its goal (8 s), recorded.
+    const first = rec.url;
+    await page.click('#record-path');
+    await waitFor(page, (u) => window.tandem.recording.url !== u, first, 30000);
+    const whole = await page.evaluate(() => window.tandem.recording);
+    assert.ok(whole.seconds > 7 && whole.seconds < 12 && whole.size > rec.size, JSON.stringify(whole));
+    assert.equal(await page.locator('#play').textContent(), 'play path', 'it stops at the goal');
   } finally {
     await stopTandem(run);
   }
