@@ -36,6 +36,8 @@ export function exposePageApi({ connection, view, loop, panel, input, playback, 
     get selectedObstacle() { return view.obstacleMeshes.find((m) => m.material.emissive.getHex() !== 0)?.name ?? null; },
     /** The section planes: [{normal, constant}]. */
     sections: () => sections.planes.map(({ plane }) => ({ normal: plane.normal.toArray(), constant: plane.constant })),
+    /** Caps the section planes' cuts, or not (to see what the caps draw). */
+    setCapped: (on) => { sections.capped = on; view.layers.invalidate(); loop.touch(); },
     /** The part's box on the page (CSS pixels) and the view's box. */
     partBox: () => view.screenBoxOf(view.part),
     viewBox: () => {

@@ -34,6 +34,7 @@ export class SectionPlanes {
     this.view = view;
     this.changed = changed;
     this.planes = []; // { plane: THREE.Plane, handle: Mesh }
+    this.capped = true; // the cuts capped (off: hollow, for comparing)
     this.group = new THREE.Group(); // the stencil meshes and caps (static layer)
     this.group.name = 'sections';
     view.layers.staticRoot.add(this.group);
@@ -159,7 +160,7 @@ export class SectionPlanes {
     if (!this.active) return;
     for (const m of this.group.children) {
       const of = m.userData.of;
-      m.visible = of.visible && !of.material.transparent;
+      m.visible = this.capped && of.visible && !of.material.transparent;
       if (m.userData.plane) m.userData.plane.coplanarPoint(m.position);
     }
   }

@@ -1,6 +1,6 @@
 // Seeing the part, in a real browser (headless Chromium, playwright-core) against a real tandem:
-// x-ray shows the part inside environment 2's tube; a section plane through the tube shows it;
-// hiding an obstacle removes its pixels; the objects list (show, hide, see-through, isolate, a
+// x-ray shows the part inside environment 2's tube; a section plane through the tube shows it, its
+// cuts capped; hiding an obstacle removes its pixels; the objects list (show, hide, see-through, isolate, a
 // click in the scene selects) and its state after a reload; "frame the part" centres it; the
 // solution drawn thick with its ends marked, the trees dimmed while it plays; a recorded WebM of
 // the playback decodes, and a still can be saved; the layered drawing for software renderers shows
@@ -124,6 +124,16 @@ test('x-ray and a section plane show the part inside environment 2\'s tube; "fra
     await settle(page);
     const cut = await viewPixels(page, 'view-tube-section.png');
     assert.ok(await partShare(page, cut) > 0.2, `a section plane through the tube shows the part: ${await partShare(page, cut)}`);
+    // The caps: without them the cut floor and plates are hollow shells.
+    await page.evaluate(() => window.tandem.setCapped(false));
+    await settle(page);
+    const hollow = await viewPixels(page, 'view-tube-section-hollow.png');
+    let capped = 0;
+    for (let i = 0; i < cut.data.length; i += 4) {
+      if (Math.max(...[0, 1, 2].map((k) => Math.abs(cut.data[i + k] - hollow.data[i + k]))) > 40) ++capped;
+    }
+    assert.ok(capped > 2000, `the caps draw the cut faces: ${capped} pixels`);
+    await page.evaluate(() => window.tandem.setCapped(true));
     await page.click('#section-add');
     await waitFor(page, () => window.tandem.sections().length === 2);
     const [a, b] = await page.evaluate(() => window.tandem.sections());
