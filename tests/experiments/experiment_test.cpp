@@ -100,6 +100,9 @@ TEST(ExperimentFile, FaultsNameTheFileAndLine) {
       {head + "[[sweep]]\ncontact_samples = 2.5\n",
        "x.toml:4: contact_samples must be a whole number in [1, 100000], not 2.5"},
       {head + "seeds = 0\n", "x.toml:3: seeds must be a positive integer"},
+      // A float where an integer goes, out of an integer's range (a fuzz finding).
+      {head + "seeds = 2e32\n", "x.toml:3: seeds must be a positive integer"},
+      {head + "seeds = 4.0\n", "x.toml:3: seeds must be a positive integer"},
       {head + "time_limit = -1\n", "x.toml:3: time_limit must be a positive number"},
       {head + "clock = \"lunar\"\n",
        "x.toml:3: clock must be \"virtual\" (planner iterations) or \"wall\" (human time), not "
