@@ -31,6 +31,16 @@ LiveOptions journaled(const test::TempDir& dir, double digest_every_s) {
   return options;
 }
 
+/// Journaled options as the viewer runs a session: it stays after solving until stopped, without
+/// a SpaceMouse; `paused`: it starts paused.
+LiveOptions as_viewer(const test::TempDir& dir, double digest_every_s, bool paused) {
+  LiveOptions options = journaled(dir, digest_every_s);
+  options.stay = true;
+  options.spacemouse = false;
+  options.start_paused = paused;
+  return options;
+}
+
 /// A live run of seed `seed` where the operator alone grows the tree: slow through the gap, so
 /// there is time to tune, pause and record.
 RunSpec operator_alone(std::uint64_t seed) {
@@ -115,9 +125,7 @@ bool eventually(F done) {
 TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options = journaled(dir, 0.02);
-  options.stay = true;  // as with the viewer: stays after solving until stopped
-  options.spacemouse = false;
+  const LiveOptions options = as_viewer(dir, 0.02, false);
   RunSpec spec = operator_alone(5);
   LiveSession session(problem, spec, options);
   PlannerStatus status = PlannerStatus::running;
@@ -179,10 +187,7 @@ TEST(LiveSession, PauseStepResetAndTakeoverReplayToTheIdenticalTree) {
 TEST(LiveSession, DigestsRecordedWhilePausedAtTheStartAndAfterAResetReplay) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options = journaled(dir, 0.005);
-  options.stay = true;
-  options.spacemouse = false;
-  options.start_paused = true;
+  const LiveOptions options = as_viewer(dir, 0.005, true);
   RunSpec spec = operator_alone(6);
   LiveSession session(problem, spec, options);
   std::thread planner([&] { session.run(); });
@@ -238,10 +243,7 @@ class ShownOperator final : public LiveObserver {
 TEST(LiveSession, WhileThePlannerDoesNotStepTheOperatorShownIsWhereThePersonPutIt) {
   const Problem problem = detour_problem();
   test::TempDir dir;
-  LiveOptions options = journaled(dir, 0.05);
-  options.stay = true;
-  options.spacemouse = false;
-  options.start_paused = true;
+  const LiveOptions options = as_viewer(dir, 0.05, true);
   RunSpec spec = live_spec(8);
   spec.settings.interaction.alpha = 1.0;  // the computer alone: solves soon
   LiveSession session(problem, spec, options);

@@ -1,8 +1,9 @@
-// The camera's framing: "frame the part", "frame the path", "frame everything" (keys F, P, A);
+// The camera's framing: "frame the part", "frame the path", "frame everything" (keys F, G, H);
 // following the part while it moves, or the path's ghost while the path plays; and the part kept
 // visible: the obstacles between the camera and the part are found (rays to the part's centre and
 // its box's corners, every AUTO_XRAY_MS) and drawn see-through (obstacle-looks.js).
 import * as THREE from 'three';
+import { boxCorners } from './scene-view.js';
 
 const AUTO_XRAY_MS = 100;
 
@@ -23,7 +24,6 @@ export class CameraFraming {
     this.follow = false;
     this.followed = null; // the position followed at the last frame
     this.lastCheck = -Infinity;
-    this.lastSeen = '';
   }
 
   /** Frames what `what` names: 'part', 'path' or 'all'. */
@@ -72,10 +72,7 @@ export class CameraFraming {
     const object = this.target();
     const box = new THREE.Box3().setFromObject(object);
     if (box.isEmpty()) return;
-    const points = [box.getCenter(new THREE.Vector3())];
-    for (let k = 0; k < 8; ++k) {
-      points.push(new THREE.Vector3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
-    }
+    const points = [box.getCenter(new THREE.Vector3()), ...boxCorners(box)];
     const eye = view.camera.position;
     const shown = view.obstacleMeshes.filter((m) => looks.effective(m.name).shown);
     const ray = new THREE.Raycaster();

@@ -31,7 +31,6 @@ export class Recorder {
     this.chunks = [];
     this.last = null; // { size, type, url, seconds } of the last recording
     this.startedAt = 0;
-    this.onStop = null;
   }
 
   get recording() { return this.recorder !== null; }
@@ -69,8 +68,8 @@ export class Recorder {
     return blob.size;
   }
 
-  /** Starts recording (the next drawn frames); `onStop` (optional) is told when it stops. */
-  start(onStop = null) {
+  /** Starts recording (the next drawn frames). */
+  start() {
     if (this.recording) return;
     const type = TYPES.find((t) => MediaRecorder.isTypeSupported(t));
     if (!type) { this.notify('this browser cannot record WebM video', 'bad'); return; }
@@ -78,7 +77,6 @@ export class Recorder {
     const stream = this.canvas.captureStream(VIDEO_FPS);
     this.recorder = new MediaRecorder(stream, { mimeType: type, videoBitsPerSecond: 8e6 });
     this.chunks = [];
-    this.onStop = onStop;
     this.recorder.ondataavailable = (e) => { if (e.data.size) this.chunks.push(e.data); };
     this.recorder.onstop = () => this.finish(type, stream);
     this.startedAt = performance.now();
@@ -102,9 +100,6 @@ export class Recorder {
     link.download = fileName(this.problem, 'webm');
     link.hidden = false;
     this.notify(`recorded ${this.last.seconds.toFixed(1)} s of video (${(blob.size / 1e6).toFixed(1)} MB)`, 'ok');
-    const done = this.onStop;
-    this.onStop = null;
-    done?.(this.last);
   }
 
   download(blob, name) {

@@ -45,6 +45,12 @@ const START_COLOUR = 0x60a5fa, GOAL_COLOUR = 0x4ade80;
 /** The render order of what x-ray draws in front of the see-through obstacles. */
 const IN_FRONT = 10;
 
+/** The eight corners of a Box3. */
+export function boxCorners(box) {
+  return [0, 1, 2, 3, 4, 5, 6, 7].map((k) => new THREE.Vector3(
+    k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
+}
+
 /** Places an object at a configuration [x y z qx qy qz qw]. */
 function setPose(object, q) {
   object.position.set(q[0], q[1], q[2]);
@@ -351,9 +357,7 @@ export class SceneView {
 
   /** The bounding box of an object on the page, in CSS pixels. */
   screenBoxOf(object) {
-    const box = new THREE.Box3().setFromObject(object);
-    const corners = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => this.screenOf(
-      k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
+    const corners = boxCorners(new THREE.Box3().setFromObject(object)).map((p) => this.screenOf(p.x, p.y, p.z));
     const xs = corners.map((c) => c.x), ys = corners.map((c) => c.y);
     return { left: Math.min(...xs), top: Math.min(...ys), right: Math.max(...xs), bottom: Math.max(...ys) };
   }

@@ -73,15 +73,11 @@ export class SectionPlanes {
     return plane;
   }
 
-  /** The last plane added goes (all of them: clear()). */
-  removeLast() {
-    const last = this.planes.pop();
-    if (last) this.handles.remove(last.handle);
-    this.rebuild();
-  }
-
+  /** No plane. */
   clear() {
-    while (this.planes.length) this.removeLast();
+    this.handles.clear();
+    this.planes = [];
+    this.rebuild();
   }
 
   /** Turns the last plane round: the other side is cut away. */
@@ -108,6 +104,7 @@ export class SectionPlanes {
   /** A handle was dragged: its plane follows it. */
   moved() {
     for (const { plane, handle } of this.planes) plane.setFromNormalAndCoplanarPoint(plane.normal, handle.position);
+    this.placeCaps();
     this.view.layers.invalidate();
     this.changed();
   }
@@ -122,6 +119,7 @@ export class SectionPlanes {
     this.view.layers.setClipping(planes);
     this.disposeCaps();
     this.view.obstacleMeshes.forEach((mesh, i) => planes.forEach((plane, j) => this.cap(mesh, i, plane, j, planes)));
+    this.placeCaps();
     const last = this.planes[this.planes.length - 1];
     if (last) this.drag.attach(last.handle); else this.drag.detach();
     this.view.layers.invalidate();
@@ -155,13 +153,17 @@ export class SectionPlanes {
     }
   }
 
-  /** Before a frame: caps only for the obstacles drawn opaque; each on its plane. */
+  /** Each cap on its plane. */
+  placeCaps() {
+    for (const m of this.group.children) if (m.userData.plane) m.userData.plane.coplanarPoint(m.position);
+  }
+
+  /** Before a frame: caps only for the obstacles drawn opaque (their looks change at any time). */
   update() {
     if (!this.active) return;
     for (const m of this.group.children) {
       const of = m.userData.of;
       m.visible = this.capped && of.visible && !of.material.transparent;
-      if (m.userData.plane) m.userData.plane.coplanarPoint(m.position);
     }
   }
 
