@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tandem/collision/distance_grid.hpp"
+#include "tandem/collision/obstacle_broad_phase.hpp"
 #include "tandem/collision/sphere_tree.hpp"
 #include "tandem/core/error.hpp"
 
@@ -137,7 +138,13 @@ struct SharedGeometry {
   std::vector<FclPart> obstacles;
   std::vector<std::string> obstacle_names;
   double object_radius = 0.0;
+  /// The tree over the obstacle parts' boxes (built when there are kBroadPhaseFrom or more).
+  std::unique_ptr<const ObstacleBroadPhase> broad_phase;
 };
+
+ObstacleBroadPhase::Box broad_box(const Box3& b) {
+  return {b.centre - b.half, b.centre + b.half};
+}
 
 /// The largest distance from the body frame's origin to a point of a part posed at X_BP.
 double part_radius(const Geometry& g, const Geom& geom, const Eigen::Isometry3d& X_BP) {
@@ -284,6 +291,13 @@ struct CollisionChecker::Impl {
   fcl::CollisionRequestd collision_request;
   fcl::DistanceRequestd distance_request;
   fcl::DistanceRequestd clearance_request;
+  BroadPhase broad_phase = BroadPhase::automatic;
+  std::vector<std::size_t> candidates;  ///< for_parts_within()'s, kept to spare allocations
+  struct Seen {
+    std::size_t object_part, obstacle_part;
+    NearestObstacle pair;
+  };
+  std::vector<Seen> seen;  ///< nearest_through_tree()'s pairs
 
   explicit Impl(std::shared_ptr<const SharedGeometry> g) : geometry(std::move(g)) {
     collision_request.num_max_contacts = 1;
@@ -298,6 +312,147 @@ struct CollisionChecker::Impl {
 
   Eigen::Isometry3d world_pose(const FclPart& part, const Eigen::Isometry3d& X_WO) const {
     return part.pose_is_identity ? X_WO : X_WO * part.pose;
+  }
+
+  const ObstacleBroadPhase* tree() const {
+    const bool use = broad_phase == BroadPhase::tree ||
+                     (broad_phase == BroadPhase::automatic &&
+                      geometry->obstacles.size() >= CollisionChecker::kBroadPhaseFrom);
+    return use ? geometry->broad_phase.get() : nullptr;
+  }
+
+  /// Calls visit(obstacle part) for the obstacle parts whose boxes overlap `box` (the linear
+  /// loop's test, whichever way they are found), until a call returns true.
+  template <class Visit>
+  bool for_overlapping(const Box3& box, Visit&& visit) const {
+    const auto& obstacles = geometry->obstacles;
+    const auto test = [&](std::size_t i) { return box.overlaps(obstacles[i].box) && visit(i); };
+    if (const ObstacleBroadPhase* t = tree())
+      return t->overlapping(broad_box(box), test);
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      if (test(i))
+        return true;
+    }
+    return false;
+  }
+
+  /// Calls visit(obstacle part), in the scene's order, for the obstacle parts whose boxes may be
+  /// within `within` of one of `boxes` (every part without the tree; the tree's candidates with
+  /// it), until a call returns true. The order keeps order-dependent answers (clearance bounds,
+  /// ties) the linear loop's.
+  template <class Visit>
+  bool for_parts_within(const Box3* boxes, std::size_t count, double within, Visit&& visit) {
+    const ObstacleBroadPhase* t = tree();
+    if (t == nullptr) {
+      for (std::size_t i = 0; i < geometry->obstacles.size(); ++i) {
+        if (visit(i))
+          return true;
+      }
+      return false;
+    }
+    candidates.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      Box3 box = boxes[k];
+      box.half.array() += within;
+      t->overlapping(broad_box(box), [&](std::size_t i) {
+        candidates.push_back(i);
+        return false;
+      });
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (const std::size_t i : candidates) {
+      if (visit(i))
+        return true;
+    }
+    return false;
+  }
+
+  /// The nearest obstacle part to the object at X_WO: every pair of parts in turn, skipping those
+  /// whose boxes are no nearer than the best so far; the first colliding pair ends it.
+  NearestObstacle nearest_linear(const Eigen::Isometry3d& X_WO) {
+    NearestObstacle best;
+    best.distance = std::numeric_limits<double>::infinity();
+    for (const auto& part : geometry->object) {
+      const Eigen::Isometry3d X_WP = world_pose(part, X_WO);
+      const Box3 box = part.box.transformed(X_WP);
+      for (const auto& obstacle : geometry->obstacles) {
+        if (box.distance_to(obstacle.box) >= best.distance)
+          continue;
+        const NearestObstacle pair =
+            nearest_pair(part, X_WP, obstacle, collision_request, distance_request, counters);
+        if (pair.in_collision)
+          return pair;
+        if (pair.distance < best.distance)
+          best = pair;
+      }
+    }
+    return best;
+  }
+
+  /// nearest_linear()'s answer through the tree: the least distance found nearest boxes first,
+  /// then, of the pairs before the one found (in the order nearest_linear() takes them), the first
+  /// as near or colliding, which is the one nearest_linear() keeps.
+  NearestObstacle nearest_through_tree(const Eigen::Isometry3d& X_WO) {
+    const ObstacleBroadPhase& t = *tree();
+    seen.clear();
+    NearestObstacle best;
+    best.distance = std::numeric_limits<double>::infinity();
+    std::pair<std::size_t, std::size_t> key{SIZE_MAX, SIZE_MAX};  // (object part, obstacle part)
+    for (std::size_t k = 0; k < geometry->object.size() && !best.in_collision; ++k) {
+      const FclPart& part = geometry->object[k];
+      const Eigen::Isometry3d X_WP = world_pose(part, X_WO);
+      const Box3 box = part.box.transformed(X_WP);
+      t.nearer_than(broad_box(box), best.distance, [&](std::size_t i, double&) {
+        if (box.distance_to(geometry->obstacles[i].box) >= best.distance)
+          return false;
+        const NearestObstacle pair = nearest_pair(part, X_WP, geometry->obstacles[i],
+                                                  collision_request, distance_request, counters);
+        seen.push_back({k, i, pair});
+        if (pair.in_collision || pair.distance < best.distance) {
+          best = pair;
+          key = {k, i};
+        }
+        return pair.in_collision;
+      });
+    }
+    first_in_order(X_WO, best, key);
+    return best;
+  }
+
+  /// Of the pairs before `key` whose boxes are within best's distance, the first that collides or
+  /// is as near as best (ties, or the first colliding pair) replaces it.
+  void first_in_order(const Eigen::Isometry3d& X_WO, NearestObstacle& best,
+                      std::pair<std::size_t, std::size_t>& key) {
+    for (std::size_t k = 0; k <= key.first && k < geometry->object.size(); ++k) {
+      const FclPart& part = geometry->object[k];
+      const Eigen::Isometry3d X_WP = world_pose(part, X_WO);
+      const Box3 box = part.box.transformed(X_WP);
+      const bool found = for_parts_within(&box, 1, best.distance, [&](std::size_t i) {
+        if (std::pair(k, i) >= key)
+          return true;
+        if (box.distance_to(geometry->obstacles[i].box) > best.distance)
+          return false;
+        const NearestObstacle pair = pair_of(k, i, X_WP);
+        if (!pair.in_collision && !(pair.distance == best.distance && !best.in_collision))
+          return false;
+        best = pair;
+        key = {k, i};
+        return true;
+      });
+      if (found)
+        return;
+    }
+  }
+
+  /// The pair's answer, from nearest_through_tree()'s if it asked FCL already.
+  NearestObstacle pair_of(std::size_t k, std::size_t i, const Eigen::Isometry3d& X_WP) {
+    for (const Seen& s : seen) {
+      if (s.object_part == k && s.obstacle_part == i)
+        return s.pair;
+    }
+    return nearest_pair(geometry->object[k], X_WP, geometry->obstacles[i], collision_request,
+                        distance_request, counters);
   }
 };
 
@@ -325,6 +480,10 @@ CollisionChecker::CollisionChecker(const Scene& scene) {
   }
   if (g->object.empty())
     throw InputError("object '" + scene.object.name + "'", "the moving object has no geometry");
+  std::vector<ObstacleBroadPhase::Box> boxes;
+  for (const FclPart& part : g->obstacles)
+    boxes.push_back(broad_box(part.box));
+  g->broad_phase = std::make_unique<const ObstacleBroadPhase>(boxes);
   impl_ = std::make_unique<Impl>(std::move(g));
 }
 
@@ -337,6 +496,7 @@ CollisionChecker CollisionChecker::clone() const {
   auto impl = std::make_unique<Impl>(impl_->geometry);
   impl->built = impl_->built;
   impl->active = impl_->active;
+  impl->broad_phase = impl_->broad_phase;
   return CollisionChecker(std::move(impl));
 }
 
@@ -394,22 +554,20 @@ bool CollisionChecker::is_collision_free(const Config& q) {
   }
   for (const auto& part : m.geometry->object) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
-    const Box3 box = part.box.transformed(X_WP);
-    for (const auto& obstacle : m.geometry->obstacles) {
-      if (!box.overlaps(obstacle.box))
-        continue;
+    const bool hit = m.for_overlapping(part.box.transformed(X_WP), [&](std::size_t i) {
+      const FclPart& obstacle = m.geometry->obstacles[i];
       fcl::CollisionResultd result;
       try {
-        if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
-                         obstacle.pose, m.collision_request, result) > 0) {
-          return false;
-        }
+        return fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
+                            obstacle.pose, m.collision_request, result) > 0;
       } catch (const std::exception&) {
         // GJK/EPA can throw on degenerate input (fcl #395, #415): be conservative.
         ++m.counters.fcl_errors;
-        return false;
+        return true;
       }
-    }
+    });
+    if (hit)
+      return false;
   }
   return true;
 }
@@ -417,24 +575,8 @@ bool CollisionChecker::is_collision_free(const Config& q) {
 NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
   Impl& m = *impl_;
   ++m.counters.distance_queries;
-  NearestObstacle best;
-  best.distance = std::numeric_limits<double>::infinity();
   const Eigen::Isometry3d X_WO = q.pose();
-  for (const auto& part : m.geometry->object) {
-    const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
-    const Box3 box = part.box.transformed(X_WP);
-    for (const auto& obstacle : m.geometry->obstacles) {
-      if (box.distance_to(obstacle.box) >= best.distance)
-        continue;
-      const NearestObstacle pair =
-          nearest_pair(part, X_WP, obstacle, m.collision_request, m.distance_request, m.counters);
-      if (pair.in_collision)
-        return pair;
-      if (pair.distance < best.distance)
-        best = pair;
-    }
-  }
-  return best;
+  return m.tree() != nullptr ? m.nearest_through_tree(X_WO) : m.nearest_linear(X_WO);
 }
 
 std::vector<NearestObstacle> CollisionChecker::nearest_surfaces(const Config& q, double within) {
@@ -442,18 +584,23 @@ std::vector<NearestObstacle> CollisionChecker::nearest_surfaces(const Config& q,
   ++m.counters.distance_queries;
   std::vector<NearestObstacle> out;
   const Eigen::Isometry3d X_WO = q.pose();
-  for (const auto& obstacle : m.geometry->obstacles) {
+  std::vector<Box3> boxes;
+  for (const auto& part : m.geometry->object)
+    boxes.push_back(part.box.transformed(m.world_pose(part, X_WO)));
+  const bool touching = m.for_parts_within(boxes.data(), boxes.size(), within, [&](std::size_t i) {
+    const FclPart& obstacle = m.geometry->obstacles[i];
     NearestObstacle best;
     best.distance = within;
     bool found = false;
-    for (const auto& part : m.geometry->object) {
-      const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
-      if (part.box.transformed(X_WP).distance_to(obstacle.box) > best.distance)
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (boxes[k].distance_to(obstacle.box) > best.distance)
         continue;
+      const FclPart& part = m.geometry->object[k];
       const NearestObstacle pair =
-          nearest_pair(part, X_WP, obstacle, m.collision_request, m.distance_request, m.counters);
+          nearest_pair(part, m.world_pose(part, X_WO), obstacle, m.collision_request,
+                       m.distance_request, m.counters);
       if (pair.in_collision)
-        return {};
+        return true;
       if (pair.distance <= best.distance) {
         best = pair;
         found = true;
@@ -461,7 +608,10 @@ std::vector<NearestObstacle> CollisionChecker::nearest_surfaces(const Config& q,
     }
     if (found)
       out.push_back(best);
-  }
+    return false;
+  });
+  if (touching)
+    return {};
   std::stable_sort(out.begin(), out.end(), [](const NearestObstacle& a, const NearestObstacle& b) {
     return a.distance < b.distance;
   });
@@ -482,12 +632,15 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
     }
   }
   double best = fcl_cap;
+  bool failed = false;
   for (const auto& part : m.geometry->object) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
+    // The candidates in the scene's order: the bound depends on the order FCL meets the parts in.
     const Box3 box = part.box.transformed(X_WP);
-    for (const auto& obstacle : m.geometry->obstacles) {
+    const bool stop = m.for_parts_within(&box, 1, fcl_cap, [&](std::size_t i) {
+      const FclPart& obstacle = m.geometry->obstacles[i];
       if (box.distance_to(obstacle.box) >= best)
-        continue;
+        return false;
       // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far
       // apart; what it returns, d, bounds the true distance from below as d / (1 + e). If it
       // found nothing closer, d is that start, and best stays: best * (1 + e) / (1 + e) may round
@@ -499,19 +652,31 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
                       m.clearance_request, result);
       } catch (const std::exception&) {
         ++m.counters.fcl_errors;
-        return 0.0;
+        failed = true;
+        return true;
       }
       if (result.min_distance < start)
         best = std::min(best, result.min_distance / kGrow);
-      if (best <= 0.0)
-        return best;
-    }
+      return best <= 0.0;
+    });
+    if (failed)
+      return 0.0;
+    if (stop)
+      return best;
   }
   return best;
 }
 
 double CollisionChecker::object_radius() const {
   return impl_->geometry->object_radius;
+}
+
+void CollisionChecker::use_broad_phase(BroadPhase broad_phase) {
+  impl_->broad_phase = broad_phase;
+}
+
+bool CollisionChecker::uses_tree() const {
+  return impl_->tree() != nullptr;
 }
 
 std::size_t CollisionChecker::obstacle_count() const {

@@ -46,6 +46,12 @@ struct ObjectExtent {
 
 class DistanceGrid;
 
+/// How a query finds the obstacle parts to hand to FCL: by testing every part's box in turn
+/// (linear), or through the tree of their boxes (obstacle_broad_phase.hpp). The answers are the
+/// same (the tree only skips parts the box test would skip); automatic takes the tree from
+/// CollisionChecker::kBroadPhaseFrom obstacle parts on, where it measures faster (bench/scaling).
+enum class BroadPhase { automatic, linear, tree };
+
 class CollisionChecker {
  public:
   /// Builds FCL models for every part (BVHModel<OBBRSS> for meshes, FCL primitives otherwise).
@@ -108,6 +114,12 @@ class CollisionChecker {
   bool has_distance_grid() const;
   /// The distance grid in use, or null (immutable; shared with the clones).
   const DistanceGrid* distance_grid() const;
+
+  /// The broad phase for the queries of this checker (clones made afterwards take it).
+  void use_broad_phase(BroadPhase broad_phase);
+  /// Whether the queries go through the tree of obstacle boxes.
+  bool uses_tree() const;
+  static constexpr std::size_t kBroadPhaseFrom = 32;
 
   std::size_t obstacle_count() const;
   const std::string& obstacle_name(std::size_t index) const;
