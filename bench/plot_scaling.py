@@ -21,7 +21,9 @@ SERIES = {
         ("checks_tree", "yes/no checks, broad phase"),
         ("distances_linear", "distance queries, linear loop"),
         ("distances_tree", "distance queries, broad phase"),
+        ("clearances_linear", "clearance bounds, linear loop"),
         ("clearances_tree", "clearance bounds, broad phase"),
+        ("checks_grid", "yes/no checks, distance grid then broad phase"),
         ("operator_hz", "operator loop (Hz)"),
     ]),
     "mesh": ("triangles", "queries per second", [

@@ -16,6 +16,7 @@
 //
 //   build/bench/tandem-scaling --jsonl scaling.jsonl > scaling.md
 
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
@@ -59,12 +60,11 @@ struct Options {
   std::string jsonl;
 };
 
-/// Resident memory now (MiB), from /proc/self/statm.
-double resident_mib() {
-  std::ifstream statm("/proc/self/statm");
-  double pages = 0.0, resident = 0.0;
-  statm >> pages >> resident;
-  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+/// Memory allocated through malloc now (MiB; glibc's count, so memory freed earlier and reused
+/// does not hide what a structure takes, as a resident-size difference would).
+double allocated_mib() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
 }
 
 /// Peak resident memory of the process so far (MiB).
@@ -129,12 +129,13 @@ double operator_rate(const tandem::Problem& p, const tandem::CollisionChecker& c
 struct PlanTimes {
   int solved = 0;
   double median_s = 0.0;
+  double checks_per_s = 0.0;  ///< the planner's configuration checks per second, median of the runs
 };
 
 /// `plan`'s default planner on the problem, seeds 1..runs; unsolved runs count at the limit.
 PlanTimes plan_times(const tandem::Problem& p, const tandem::CollisionChecker& checker,
                      const Options& o) {
-  std::vector<double> times;
+  std::vector<double> times, rates;
   PlanTimes out;
   for (int seed = 1; seed <= o.plan_runs; ++seed) {
     tandem::RunSpec spec = tandem::default_spec(tandem::kMixedPortfolio, p.hints);
@@ -146,10 +147,14 @@ PlanTimes plan_times(const tandem::Problem& p, const tandem::CollisionChecker& c
     const tandem::RunOutcome r = tandem::execute_run(p, spec, mine);
     const bool solved = r.status == tandem::PlannerStatus::solved;
     out.solved += solved ? 1 : 0;
-    times.push_back(solved ? watch.seconds() : o.time_limit);
+    const double seconds = watch.seconds();
+    times.push_back(solved ? seconds : o.time_limit);
+    rates.push_back(static_cast<double>(r.stats.collision_checks) / seconds);
   }
   std::sort(times.begin(), times.end());
+  std::sort(rates.begin(), rates.end());
   out.median_s = times.empty() ? 0.0 : times[times.size() / 2];
+  out.checks_per_s = rates.empty() ? 0.0 : rates[rates.size() / 2];
   return out;
 }
 
@@ -157,16 +162,17 @@ void measure_parts(const Options& o, Output& out) {
   std::printf(
       "\n### Parts (box field, uniform states in the 3 m region)\n\n"
       "| parts | build (s) | memory (MiB) | checks/s linear | checks/s tree | distances/s linear "
-      "| distances/s tree | clearances/s tree | operator loop (Hz) | plan solved | plan median "
-      "(s) |\n|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+      "| distances/s tree | clearances/s linear | clearances/s tree | checks/s with the grid "
+      "| operator loop (Hz) | plan solved | plan median (s) | plan checks/s |\n"
+      "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   for (const std::size_t n : o.parts) {
     tandem::Problem p = tandem::box_field_problem({.parts = n, .seed = 1});
     p.guide = {p.start, p.goal};
-    const double mib0 = resident_mib();
+    const double mib0 = allocated_mib();
     const tandem::Stopwatch build;
     tandem::CollisionChecker tree(p.scene);
     const double build_s = build.seconds();
-    const double mib = resident_mib() - mib0;
+    const double mib = allocated_mib() - mib0;
     tree.use_broad_phase(tandem::BroadPhase::tree);
     tandem::CollisionChecker linear = tree.clone();
     linear.use_broad_phase(tandem::BroadPhase::linear);
@@ -178,14 +184,24 @@ void measure_parts(const Options& o, Output& out) {
         rate(states, [&](const auto& q) { return linear.nearest_obstacle(q).distance; });
     const double d_tree =
         rate(states, [&](const auto& q) { return tree.nearest_obstacle(q).distance; });
+    const double k_lin =
+        rate(states, [&](const auto& q) { return linear.clearance_bound(q, cap); });
     const double k_tree = rate(states, [&](const auto& q) { return tree.clearance_bound(q, cap); });
     tandem::CollisionChecker automatic = tree.clone();
     automatic.use_broad_phase(tandem::BroadPhase::automatic);
+    // As the planner's motion validator checks: the distance grid first (built here, outside
+    // the timing), then the broad phase.
+    tandem::CollisionChecker gridded = automatic.clone();
+    gridded.use_distance_grid(p.space.bounds(), 0.5 * cap);
+    const double g_auto = rate(states, [&](const auto& q) { return gridded.is_collision_free(q); });
     const double op_hz = operator_rate(p, automatic, 1.0);
     const PlanTimes plan = plan_times(p, automatic, o);
-    std::printf("| %zu | %.3f | %.1f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %d/%d | %.3f |\n",
-                n, build_s, mib, c_lin, c_tree, d_lin, d_tree, k_tree, op_hz, plan.solved,
-                o.plan_runs, plan.median_s);
+    std::printf(
+        "| %zu | %.3f | %.1f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %d/%d | "
+        "%.3f "
+        "| %.0f |\n",
+        n, build_s, mib, c_lin, c_tree, d_lin, d_tree, k_lin, k_tree, g_auto, op_hz, plan.solved,
+        o.plan_runs, plan.median_s, plan.checks_per_s);
     out.record({{"kind", "parts"},
                 {"parts", n},
                 {"build_s", build_s},
@@ -194,11 +210,14 @@ void measure_parts(const Options& o, Output& out) {
                 {"checks_tree", c_tree},
                 {"distances_linear", d_lin},
                 {"distances_tree", d_tree},
+                {"clearances_linear", k_lin},
                 {"clearances_tree", k_tree},
+                {"checks_grid", g_auto},
                 {"operator_hz", op_hz},
                 {"plan_solved", plan.solved},
                 {"plan_runs", o.plan_runs},
-                {"plan_median_s", plan.median_s}});
+                {"plan_median_s", plan.median_s},
+                {"plan_checks_per_s", plan.checks_per_s}});
   }
 }
 
@@ -276,7 +295,7 @@ void measure_meshes(const Options& o, Output& out) {
   for (const std::size_t t : o.triangles) {
     const fs::path file = dir / ("sphere-" + std::to_string(t) + ".stl");
     write_stl(sphere_mesh(t), file);
-    const double mib0 = resident_mib();
+    const double mib0 = allocated_mib();
     const tandem::Stopwatch load;
     tandem::LoadedMesh loaded = tandem::load_mesh(file);
     const double load_s = load.seconds();
@@ -294,7 +313,7 @@ void measure_meshes(const Options& o, Output& out) {
     const tandem::Stopwatch build;
     tandem::CollisionChecker checker(scene);
     const double build_s = build.seconds();
-    const double mib = resident_mib() - mib0;
+    const double mib = allocated_mib() - mib0;
     const tandem::SE3Space space(tandem::SpaceKind::se3,
                                  {Eigen::Vector3d::Constant(-2.0), Eigen::Vector3d::Constant(2.0)});
     const auto states = near_sphere(space, o.states);
@@ -327,7 +346,7 @@ void measure_trees(const Options& o, Output& out) {
   const tandem::Problem p = tandem::box_field_problem({.parts = 10, .seed = 1});
   const std::size_t largest = *std::max_element(o.nodes.begin(), o.nodes.end());
   tandem::Rng rng(13);
-  const double mib0 = resident_mib();
+  const double mib0 = allocated_mib();
   tandem::Tree tree(p.space, "kdtree", p.start);
   const tandem::Stopwatch grow;
   std::size_t next = 0;
@@ -339,7 +358,7 @@ void measure_trees(const Options& o, Output& out) {
     if (next < sizes.size() && tree.size() == sizes[next]) {
       const double grow_s = grow.seconds();
       const double bytes =
-          (resident_mib() - mib0) * 1024.0 * 1024.0 / static_cast<double>(tree.size());
+          (allocated_mib() - mib0) * 1024.0 * 1024.0 / static_cast<double>(tree.size());
       std::vector<tandem::Config> queries;
       for (int i = 0; i < 10000; ++i)
         queries.push_back(p.space.sample_uniform(rng));
@@ -390,7 +409,7 @@ int main(int argc, char** argv) {
       measure_trees(o, out);
     std::printf("\npeak memory of the process: %.0f MiB\n", peak_mib());
   } catch (const tandem::InputError& e) {
-    std::fprintf(stderr, "tandem-scaling: %s\n", e.what());
+    std::fprintf(stderr, "tandem-scaling: error: %s\n", e.what());
     return 2;
   }
   return 0;

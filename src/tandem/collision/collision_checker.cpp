@@ -138,7 +138,7 @@ struct SharedGeometry {
   std::vector<FclPart> obstacles;
   std::vector<std::string> obstacle_names;
   double object_radius = 0.0;
-  /// The tree over the obstacle parts' boxes (built when there are kBroadPhaseFrom or more).
+  /// The tree over the obstacle parts' boxes.
   std::unique_ptr<const ObstacleBroadPhase> broad_phase;
 };
 
@@ -314,10 +314,10 @@ struct CollisionChecker::Impl {
     return part.pose_is_identity ? X_WO : X_WO * part.pose;
   }
 
-  const ObstacleBroadPhase* tree() const {
+  /// The tree when it is in use (from `from` obstacle parts on, in automatic mode), else null.
+  const ObstacleBroadPhase* tree(std::size_t from = CollisionChecker::kBroadPhaseFrom) const {
     const bool use = broad_phase == BroadPhase::tree ||
-                     (broad_phase == BroadPhase::automatic &&
-                      geometry->obstacles.size() >= CollisionChecker::kBroadPhaseFrom);
+                     (broad_phase == BroadPhase::automatic && geometry->obstacles.size() >= from);
     return use ? geometry->broad_phase.get() : nullptr;
   }
 
@@ -394,7 +394,7 @@ struct CollisionChecker::Impl {
   /// then, of the pairs before the one found (in the order nearest_linear() takes them), the first
   /// as near or colliding, which is the one nearest_linear() keeps.
   NearestObstacle nearest_through_tree(const Eigen::Isometry3d& X_WO) {
-    const ObstacleBroadPhase& t = *tree();
+    const ObstacleBroadPhase& t = *geometry->broad_phase;
     seen.clear();
     NearestObstacle best;
     best.distance = std::numeric_limits<double>::infinity();
@@ -576,7 +576,8 @@ NearestObstacle CollisionChecker::nearest_obstacle(const Config& q) {
   Impl& m = *impl_;
   ++m.counters.distance_queries;
   const Eigen::Isometry3d X_WO = q.pose();
-  return m.tree() != nullptr ? m.nearest_through_tree(X_WO) : m.nearest_linear(X_WO);
+  return m.tree(kNearestThroughTreeFrom) != nullptr ? m.nearest_through_tree(X_WO)
+                                                    : m.nearest_linear(X_WO);
 }
 
 std::vector<NearestObstacle> CollisionChecker::nearest_surfaces(const Config& q, double within) {

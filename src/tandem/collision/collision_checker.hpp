@@ -48,8 +48,10 @@ class DistanceGrid;
 
 /// How a query finds the obstacle parts to hand to FCL: by testing every part's box in turn
 /// (linear), or through the tree of their boxes (obstacle_broad_phase.hpp). The answers are the
-/// same (the tree only skips parts the box test would skip); automatic takes the tree from
-/// CollisionChecker::kBroadPhaseFrom obstacle parts on, where it measures faster (bench/scaling).
+/// same (the tree only skips parts the box test would skip, and visits the rest in the scene's
+/// order where the order shows in an answer); automatic takes the tree where it measures faster
+/// (bench/scaling.cpp): from CollisionChecker::kBroadPhaseFrom obstacle parts on, and for
+/// nearest_obstacle(), whose search goes nearest parts first, from kNearestThroughTreeFrom.
 enum class BroadPhase { automatic, linear, tree };
 
 class CollisionChecker {
@@ -120,6 +122,7 @@ class CollisionChecker {
   /// Whether the queries go through the tree of obstacle boxes.
   bool uses_tree() const;
   static constexpr std::size_t kBroadPhaseFrom = 32;
+  static constexpr std::size_t kNearestThroughTreeFrom = 2;
 
   std::size_t obstacle_count() const;
   const std::string& obstacle_name(std::size_t index) const;

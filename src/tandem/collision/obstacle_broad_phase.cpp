@@ -1,6 +1,6 @@
 #include "tandem/collision/obstacle_broad_phase.hpp"
 
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree_array.h>
 #include <fcl/geometry/shape/sphere.h>
 
 #include <cstdint>
@@ -14,6 +14,10 @@ namespace {
 /// decides.
 constexpr double kMargin = 1e-9;
 
+double margin_of(const ObstacleBroadPhase::Box& box) {
+  return kMargin * (1.0 + box.min.cwiseAbs().maxCoeff() + box.max.cwiseAbs().maxCoeff());
+}
+
 /// An FCL collision object whose world box is set, not computed from its geometry (FCL's is a
 /// sphere's box for a turned object; the tree holds the parts' tight boxes). Its geometry is never
 /// used: the narrow phase is the caller's.
@@ -22,13 +26,20 @@ class BoxObject : public fcl::CollisionObjectd {
   BoxObject(const std::shared_ptr<fcl::CollisionGeometryd>& placeholder,
             const ObstacleBroadPhase::Box& box, double margin)
       : fcl::CollisionObjectd(placeholder) {
+    set_box(box, margin);
+  }
+  void set_box(const ObstacleBroadPhase::Box& box, double margin) {
     aabb.min_ = box.min - Eigen::Vector3d::Constant(margin);
     aabb.max_ = box.max + Eigen::Vector3d::Constant(margin);
   }
 };
 
-double margin_of(const ObstacleBroadPhase::Box& box) {
-  return kMargin * (1.0 + box.min.cwiseAbs().maxCoeff() + box.max.cwiseAbs().maxCoeff());
+/// The query's object: one per thread, its box set for each query (a new FCL object per query
+/// costs as much as the search of a small tree).
+BoxObject& query_object(const ObstacleBroadPhase::Box& box) {
+  thread_local BoxObject object(std::make_shared<fcl::Sphered>(1.0), box, 0.0);
+  object.set_box(box, margin_of(box));
+  return object;
 }
 
 std::size_t index_of(const fcl::CollisionObjectd* o) {
@@ -46,7 +57,7 @@ struct Query {
 struct ObstacleBroadPhase::Impl {
   std::shared_ptr<fcl::CollisionGeometryd> placeholder = std::make_shared<fcl::Sphered>(1.0);
   std::vector<std::unique_ptr<BoxObject>> objects;
-  fcl::DynamicAABBTreeCollisionManagerd tree;
+  fcl::DynamicAABBTreeCollisionManager_Arrayd tree;
 };
 
 ObstacleBroadPhase::ObstacleBroadPhase(const std::vector<Box>& boxes)
@@ -69,7 +80,7 @@ std::size_t ObstacleBroadPhase::size() const {
 }
 
 bool ObstacleBroadPhase::overlapping(const Box& query, void* visit, Trampoline call) const {
-  BoxObject q(impl_->placeholder, query, margin_of(query));
+  BoxObject& q = query_object(query);
   double unused = 0.0;
   Query data{visit, call, &unused};
   bool stopped = false;
@@ -87,7 +98,7 @@ bool ObstacleBroadPhase::overlapping(const Box& query, void* visit, Trampoline c
 
 bool ObstacleBroadPhase::nearer_than(const Box& query, double& bound, void* visit,
                                      Trampoline call) const {
-  BoxObject q(impl_->placeholder, query, margin_of(query));
+  BoxObject& q = query_object(query);
   Query data{visit, call, &bound};
   bool stopped = false;
   struct Context {
