@@ -55,7 +55,7 @@ def main(argv):
         data = sorted((r for r in rows if r.get("kind") == kind), key=lambda r: r[X[kind]])
         if not data:
             continue
-        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        fig, ax = plt.subplots(figsize=(9.0, 4.2))
         xs = [r[X[kind]] for r in data]
         for key, label in series:
             ax.plot(xs, [r[key] for r in data], marker="o", label=label)
@@ -64,7 +64,7 @@ def main(argv):
         ax.set_xlabel(x_title)
         ax.set_ylabel(y_title)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize="small")
+        ax.legend(fontsize="small", loc="center left", bbox_to_anchor=(1.02, 0.5))
         fig.tight_layout()
         fig.savefig(out / FILE[kind])
         plt.close(fig)
