@@ -110,3 +110,44 @@ TEST(MeshLoader, RefusesPlyFilesAssimpCannotRead) {
 
 }  // namespace
 }  // namespace tandem
+
+namespace tandem {
+namespace {
+
+std::string collada_square(const std::string& indices) {
+  return R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <library_geometries><geometry id="wall"><mesh>
+    <source id="pos"><float_array id="pos-array" count="12">-1 -1 0 1 -1 0 1 1 0 -1 1 0</float_array>
+      <technique_common><accessor source="#pos-array" count="4" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="vtx"><input semantic="POSITION" source="#pos"/></vertices>
+    <triangles count="2"><input semantic="VERTEX" source="#vtx" offset="0"/><p>)" +
+         indices + R"(</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="scene"><node id="n"><instance_geometry url="#wall"/>
+  </node></visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+}
+
+TEST(MeshLoader, ReadsColladaAndRefusesAnIndexListWithAStrayByte) {
+  test::TempDir dir;
+  EXPECT_EQ(load_mesh(dir.write("good.dae", collada_square("0 1 2 0 2 3"))).mesh.triangles.size(),
+            2u);
+  // assimp 5.2 ran out of memory on this one (the cfg fuzz target's finding).
+  const auto bad = dir.write("bad.dae", collada_square("0 1 2 0\xff"
+                                                       "2 3"));
+  try {
+    load_mesh(bad);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.dae"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("<p> list"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tandem

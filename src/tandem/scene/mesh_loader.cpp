@@ -11,6 +11,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
+#include "tandem/scene/collada_lists.hpp"
 #include "tandem/scene/ply_header.hpp"
 
 namespace tandem {
@@ -93,6 +94,8 @@ LoadedMesh load_mesh(const std::filesystem::path& file) {
     throw InputError(name, "cannot be opened for reading");
   if (lower_extension(file) == ".ply")
     check_ply_header(file);
+  if (lower_extension(file) == ".dae")
+    check_collada_lists(file);
 
   Assimp::Importer importer;
   // Keep points and lines out of the triangle data rather than failing on them.
