@@ -10,10 +10,8 @@
 #include <cstdio>
 #include <memory>
 
+#include "guide_walk.hpp"
 #include "parse_arguments.hpp"
-#include "tandem/core/stopwatch.hpp"
-#include "tandem/interaction/operator_model.hpp"
-#include "tandem/operators/guide_follower.hpp"
 #include "tandem/scene/builtin_scenes.hpp"
 #include "tandem/scene/problem_loader.hpp"
 
@@ -32,23 +30,11 @@ int main(int argc, char** argv) {
     if (problem.guide.empty())
       continue;
     tandem::CollisionChecker checker(problem.scene);
-    const auto profile =
-        tandem::operator_profile("experienced", problem.space, tandem::OperatorClock::seconds);
-    auto source = std::make_shared<tandem::GuideFollower>(problem.space, problem.guide, profile, 1);
-    tandem::OperatorModel model(checker, source);
-    // Walk the whole guide in the measured time, so every part of the scene is queried.
-    const double scale = source->end_time() / seconds;
-    const tandem::Stopwatch watch;
-    std::uint64_t states = 0, framed = 0;
-    double t = 0.0;
-    while ((t = watch.seconds()) < seconds) {
-      const tandem::OperatorState s = model.compute(t * scale, ++states);
-      framed += s.frame.has_value();
-    }
+    const bench::GuideWalk walk = bench::walk_guide(problem, checker, seconds);
+    const auto states = static_cast<double>(walk.states);
     std::printf("| %s | %zu | %.0f | %.1f | %.0f%% |\n", problem.name.c_str(),
-                problem.scene.obstacles.size(), static_cast<double>(states) / t,
-                1e6 * t / static_cast<double>(states),
-                100.0 * static_cast<double>(framed) / static_cast<double>(states));
+                problem.scene.obstacles.size(), states / walk.seconds, 1e6 * walk.seconds / states,
+                100.0 * static_cast<double>(walk.framed) / states);
   }
   return 0;
 }

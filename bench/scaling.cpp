@@ -30,13 +30,12 @@
 #include <string>
 #include <vector>
 
+#include "guide_walk.hpp"
 #include "parse_arguments.hpp"
 #include "tandem/collision/collision_checker.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/core/rng.hpp"
 #include "tandem/core/stopwatch.hpp"
-#include "tandem/interaction/operator_model.hpp"
-#include "tandem/operators/guide_follower.hpp"
 #include "tandem/planning/planner_registry.hpp"
 #include "tandem/planning/tree.hpp"
 #include "tandem/runs/run.hpp"
@@ -113,17 +112,8 @@ std::vector<tandem::Config> uniform_states(const tandem::Problem& p, int count) 
 /// The operator loop's rate (states a second) walking the problem's guide for `seconds`.
 double operator_rate(const tandem::Problem& p, const tandem::CollisionChecker& checker,
                      double seconds) {
-  const auto profile =
-      tandem::operator_profile("experienced", p.space, tandem::OperatorClock::seconds);
-  auto source = std::make_shared<tandem::GuideFollower>(p.space, p.guide, profile, 1);
-  tandem::OperatorModel model(checker, source);
-  const double scale = source->end_time() / seconds;
-  const tandem::Stopwatch watch;
-  std::uint64_t states = 0;
-  double t = 0.0;
-  while ((t = watch.seconds()) < seconds)
-    model.compute(t * scale, ++states);
-  return static_cast<double>(states) / t;
+  const bench::GuideWalk walk = bench::walk_guide(p, checker, seconds);
+  return static_cast<double>(walk.states) / walk.seconds;
 }
 
 struct PlanTimes {

@@ -34,8 +34,8 @@ class BoxObject : public fcl::CollisionObjectd {
   }
 };
 
-/// The query's object: one per thread, its box set for each query (a new FCL object per query
-/// costs as much as the search of a small tree).
+/// The query's object: one per thread, its box set for each query, so that a query allocates
+/// nothing.
 BoxObject& query_object(const ObstacleBroadPhase::Box& box) {
   thread_local BoxObject object(std::make_shared<fcl::Sphered>(1.0), box, 0.0);
   object.set_box(box, margin_of(box));
@@ -46,10 +46,17 @@ std::size_t index_of(const fcl::CollisionObjectd* o) {
   return static_cast<std::size_t>(reinterpret_cast<std::uintptr_t>(o->getUserData()));
 }
 
+/// What FCL's callbacks get: the caller's visitor, its bound, and whether it asked to stop.
 struct Query {
   void* visit;
   bool (*call)(void*, std::size_t, double&);
   double* bound;
+  bool stopped = false;
+
+  bool visit_part(const fcl::CollisionObjectd* o) {
+    stopped = call(visit, index_of(o), *bound);
+    return stopped;
+  }
 };
 
 }  // namespace
@@ -77,49 +84,32 @@ ObstacleBroadPhase::ObstacleBroadPhase(const std::vector<Box>& boxes)
 
 ObstacleBroadPhase::~ObstacleBroadPhase() = default;
 
-std::size_t ObstacleBroadPhase::size() const {
-  return impl_->objects.size();
-}
-
 bool ObstacleBroadPhase::overlapping(const Box& query, void* visit, Trampoline call) const {
-  BoxObject& q = query_object(query);
   double unused = 0.0;
-  Query data{visit, call, &unused};
-  bool stopped = false;
-  struct Context {
-    Query* query;
-    bool* stopped;
-  } context{&data, &stopped};
-  impl_->tree.collide(&q, &context, [](fcl::CollisionObjectd* o, fcl::CollisionObjectd*, void* c) {
-    auto* ctx = static_cast<Context*>(c);
-    *ctx->stopped = ctx->query->call(ctx->query->visit, index_of(o), *ctx->query->bound);
-    return *ctx->stopped;
-  });
-  return stopped;
+  Query q{visit, call, &unused};
+  impl_->tree.collide(&query_object(query), &q,
+                      [](fcl::CollisionObjectd* o, fcl::CollisionObjectd*, void* data) {
+                        return static_cast<Query*>(data)->visit_part(o);
+                      });
+  return q.stopped;
 }
 
 bool ObstacleBroadPhase::nearer_than(const Box& query, double& bound, void* visit,
                                      Trampoline call) const {
-  BoxObject& q = query_object(query);
-  Query data{visit, call, &bound};
-  bool stopped = false;
-  struct Context {
-    Query* query;
-    bool* stopped;
-  } context{&data, &stopped};
+  Query q{visit, call, &bound};
   impl_->tree.distance(
-      &q, &context, [](fcl::CollisionObjectd* o, fcl::CollisionObjectd*, void* c, double& dist) {
-        auto* ctx = static_cast<Context*>(c);
-        const Query& query_of = *ctx->query;
-        *ctx->stopped = query_of.call(query_of.visit, index_of(o), *query_of.bound);
+      &query_object(query), &q,
+      [](fcl::CollisionObjectd* o, fcl::CollisionObjectd*, void* data, double& dist) {
+        auto* self = static_cast<Query*>(data);
+        const bool stop = self->visit_part(o);
         // FCL prunes the subtrees at least `dist` away: the visitor's bound, with room for the
         // boxes' margins (the caller's test decides).
-        const double b = *query_of.bound;
+        const double b = *self->bound;
         dist = b < std::numeric_limits<double>::max() / 2 ? b * (1.0 + kMargin) + kMargin
                                                           : std::numeric_limits<double>::max();
-        return *ctx->stopped;
+        return stop;
       });
-  return stopped;
+  return q.stopped;
 }
 
 }  // namespace tandem

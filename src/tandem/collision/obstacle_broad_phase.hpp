@@ -50,8 +50,6 @@ class ObstacleBroadPhase {
     });
   }
 
-  std::size_t size() const;
-
  private:
   template <class Visit>
   static void* erase(Visit& visit) {
