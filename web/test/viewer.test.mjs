@@ -393,22 +393,21 @@ test('the keyboard, a gamepad and a WebHID SpaceMouse move the part', { timeout:
     await waitFor(page, () => window.tandem.operator);
     const z0 = await z();
     await page.locator('#view canvas').focus().catch(() => {});
+    // Each input is held until the planner's operator has moved: the page moves the part by
+    // velocity × frame time, and a busy machine's software-rendered frames are slow and few.
     await page.keyboard.down('KeyE');
-    await sleep(400);
-    await page.keyboard.up('KeyE');
     await waitFor(page, (z1) => window.tandem.operator.q[2] > z1 + 0.1, z0);
+    await page.keyboard.up('KeyE');
     const x0 = await x();
     await page.evaluate(() => { window.__pad.axes = [0.8, 0, 0, 0]; });
-    await sleep(400);
-    await page.evaluate(() => { window.__pad.axes = [0, 0, 0, 0]; });
     await waitFor(page, (x1) => window.tandem.operator.q[0] > x1 + 0.1, x0);
+    await page.evaluate(() => { window.__pad.axes = [0, 0, 0, 0]; });
     const x2 = await x();
     await page.click('#webhid');
     await waitFor(page, () => /SpaceMouse Compact/.test(document.getElementById('message').textContent));
     await page.evaluate(() => window.__hid.send(1, [-300, 0, 0, 0, 0, 0]));
-    await sleep(400);
-    await page.evaluate(() => window.__hid.send(1, [0, 0, 0, 0, 0, 0]));
     await waitFor(page, (x3) => window.tandem.operator.q[0] < x3 - 0.1, x2);
+    await page.evaluate(() => window.__hid.send(1, [0, 0, 0, 0, 0, 0]));
     // And a node grows where the part went.
     await waitFor(page, () => {
       const q = window.tandem.operator.q;
