@@ -47,7 +47,8 @@ struct ObjectExtent {
 class DistanceGrid;
 
 /// How a query finds the obstacle parts to hand to FCL: by testing every part's box in turn
-/// (linear), or through the tree of their boxes (obstacle_broad_phase.hpp). The answers are the
+/// (linear), or through the broad phase of their boxes (obstacle_broad_phase.hpp: a grid for
+/// overlaps where the boxes suit one, a tree otherwise and for distances). The answers are the
 /// same (the tree only skips parts the box test would skip, and visits the rest in the scene's
 /// order where the order shows in an answer); automatic takes the tree where it measures faster
 /// (bench/scaling.cpp): from CollisionChecker::kBroadPhaseFrom obstacle parts on, and for
@@ -121,7 +122,7 @@ class CollisionChecker {
   void use_broad_phase(BroadPhase broad_phase);
   /// Whether the queries go through the tree of obstacle boxes.
   bool uses_tree() const;
-  static constexpr std::size_t kBroadPhaseFrom = 32;
+  static constexpr std::size_t kBroadPhaseFrom = 16;
   static constexpr std::size_t kNearestThroughTreeFrom = 2;
 
   std::size_t obstacle_count() const;

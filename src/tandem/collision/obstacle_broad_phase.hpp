@@ -1,8 +1,10 @@
 #pragma once
 // The broad phase over the scene's static obstacle parts: FCL's dynamic AABB tree
-// (DynamicAABBTreeCollisionManager) of their world boxes, built once. A query gives a box (a part
-// of the moving object, posed) and visits the obstacle parts whose boxes overlap it, or those
-// nearer than a bound that the visitor lowers as it finds nearer parts, nearer subtrees first.
+// (DynamicAABBTreeCollisionManager) of their world boxes, built once, and a uniform grid of them
+// (box_grid.hpp) where they suit one. A query gives a box (a part of the moving object, posed) and
+// visits the obstacle parts whose boxes overlap it (through the grid if there is one: its cost does
+// not grow with the number of parts, the tree's descent does), or those nearer than a bound that
+// the visitor lowers as it finds nearer parts, nearer subtrees first (through the tree).
 // The narrow phase (FCL on the parts' own models) stays with the caller: the tree only chooses
 // which parts to hand to it, so a query's exact answer is the linear loop's (collision_checker).
 //
@@ -30,8 +32,8 @@ class ObstacleBroadPhase {
   ObstacleBroadPhase(const ObstacleBroadPhase&) = delete;
   ObstacleBroadPhase& operator=(const ObstacleBroadPhase&) = delete;
 
-  /// Calls visit(i) for every box i that overlaps `query` (touching counts), until a call returns
-  /// true; returns whether one did.
+  /// Calls visit(i) once for every box i that overlaps `query` (touching counts), in no given
+  /// order, until a call returns true; returns whether one did.
   template <class Visit>
   bool overlapping(const Box& query, Visit&& visit) const {
     return overlapping(query, erase(visit), [](void* v, std::size_t i, double&) {
