@@ -128,7 +128,7 @@ TEST(BoxGrid, AQueryThatIsNotANumberMeetsNothing) {
             0u);
 }
 
-TEST(BoxGrid, RefusesCrowdedOrUnboundedBoxes) {
+TEST(BoxGrid, RefusesCrowdedUnboundedOrNotNumberBoxes) {
   Rng rng(3);
   std::vector<Box> piled;  // a thousand boxes in one place: every query would meet them all
   for (int i = 0; i < 1000; ++i)
@@ -144,6 +144,13 @@ TEST(BoxGrid, RefusesCrowdedOrUnboundedBoxes) {
   EXPECT_FALSE(BoxGrid::build({}).has_value());
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(BoxGrid::build({{Eigen::Vector3d::Zero(), Eigen::Vector3d(inf, 1, 1)}}).has_value());
+  const double nan = std::numeric_limits<double>::quiet_NaN(), huge = 1e308;
+  EXPECT_FALSE(BoxGrid::build({{Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()},
+                               {Eigen::Vector3d::Zero(), Eigen::Vector3d(nan, 1, 1)}})
+                   .has_value());
+  EXPECT_FALSE(BoxGrid::build({{Eigen::Vector3d::Constant(-huge), Eigen::Vector3d::Zero()},
+                               {Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(huge)}})
+                   .has_value());
 }
 
 }  // namespace

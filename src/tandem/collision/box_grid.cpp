@@ -44,10 +44,12 @@ std::optional<BoxGrid> BoxGrid::build(const std::vector<Box>& boxes) {
     return std::nullopt;
   Eigen::Vector3d lo = boxes.front().min, hi = boxes.front().max;
   for (const Box& b : boxes) {
+    if (!b.min.allFinite() || !b.max.allFinite())
+      return std::nullopt;
     lo = lo.cwiseMin(b.min);
     hi = hi.cwiseMax(b.max);
   }
-  if (!lo.allFinite() || !hi.allFinite())
+  if (!(hi - lo).allFinite())  // (boxes near the ends of the doubles' range)
     return std::nullopt;
   BoxGrid grid;
   grid.boxes_ = boxes;
