@@ -103,10 +103,16 @@ TEST(BoxGrid, TouchingCountsWhereFacesLieOnTheCellsFaces) {
   EXPECT_EQ(expect_exact(*grid, boxes, {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1)}), 1u);
 }
 
-TEST(BoxGrid, StopsAtTheFirstVisitThatAsksTo) {
+/// Fifty half-unit boxes in a row along x.
+std::vector<Box> row_of_boxes() {
   std::vector<Box> boxes;
   for (int i = 0; i < 50; ++i)
     boxes.push_back({Eigen::Vector3d(i, 0, 0), Eigen::Vector3d(i + 0.5, 1, 1)});
+  return boxes;
+}
+
+TEST(BoxGrid, StopsAtTheFirstVisitThatAsksTo) {
+  const std::vector<Box> boxes = row_of_boxes();
   const auto grid = BoxGrid::build(boxes);
   ASSERT_TRUE(grid.has_value());
   for (const Box& query : {Box{Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(60, 2, 2)},
@@ -118,9 +124,7 @@ TEST(BoxGrid, StopsAtTheFirstVisitThatAsksTo) {
 }
 
 TEST(BoxGrid, AQueryThatIsNotANumberMeetsNothing) {
-  std::vector<Box> boxes;
-  for (int i = 0; i < 50; ++i)
-    boxes.push_back({Eigen::Vector3d(i, 0, 0), Eigen::Vector3d(i + 0.5, 1, 1)});
+  const std::vector<Box> boxes = row_of_boxes();
   const auto grid = BoxGrid::build(boxes);
   ASSERT_TRUE(grid.has_value());
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -49,14 +49,14 @@ std::optional<BoxGrid> BoxGrid::build(const std::vector<Box>& boxes) {
     lo = lo.cwiseMin(b.min);
     hi = hi.cwiseMax(b.max);
   }
-  if (!(hi - lo).allFinite())  // (boxes near the ends of the doubles' range)
+  const Eigen::Vector3d extent = hi - lo;
+  if (!extent.allFinite())  // (boxes near the ends of the doubles' range)
     return std::nullopt;
   BoxGrid grid;
   grid.boxes_ = boxes;
   grid.origin_ = lo;
-  const double size = cell_size(boxes, hi - lo);
+  const double size = cell_size(boxes, extent);
   grid.inverse_size_ = 1.0 / size;
-  const Eigen::Vector3d extent = hi - lo;
   grid.cells_ = {static_cast<int>(cells_along(extent.x(), size)),
                  static_cast<int>(cells_along(extent.y(), size)),
                  static_cast<int>(cells_along(extent.z(), size))};
@@ -71,11 +71,10 @@ void BoxGrid::list_boxes() {
       std::size_t(cells_[0]) * std::size_t(cells_[1]) * std::size_t(cells_[2]);
   std::vector<std::uint32_t> count(cells + 1, 0);
   const auto for_cells = [&](const Box& b, auto&& f) {
-    const Cell lo = cell_of(b.min), hi = cell_of(b.max);
-    for (int z = lo[2]; z <= hi[2]; ++z)
-      for (int y = lo[1]; y <= hi[1]; ++y)
-        for (int x = lo[0]; x <= hi[0]; ++x)
-          f(index({x, y, z}));
+    each_cell(cell_of(b.min), cell_of(b.max), [&](const Cell& c) {
+      f(index(c));
+      return false;
+    });
   };
   std::vector<bool> large(boxes_.size());
   for (std::size_t i = 0; i < boxes_.size(); ++i) {

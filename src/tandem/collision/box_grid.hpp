@@ -48,15 +48,7 @@ class BoxGrid {
       if (overlaps(boxes_[i], query) && visit(std::size_t{i}))
         return true;
     }
-    for (int z = lo[2]; z <= hi[2]; ++z) {
-      for (int y = lo[1]; y <= hi[1]; ++y) {
-        for (int x = lo[0]; x <= hi[0]; ++x) {
-          if (visit_cell({x, y, z}, query, visit))
-            return true;
-        }
-      }
-    }
-    return false;
+    return each_cell(lo, hi, [&](const Cell& cell) { return visit_cell(cell, query, visit); });
   }
 
   std::size_t cell_count() const { return start_.size() - 1; }
@@ -87,6 +79,20 @@ class BoxGrid {
     return (std::size_t(c[2]) * std::size_t(cells_[1]) + std::size_t(c[1])) *
                std::size_t(cells_[0]) +
            std::size_t(c[0]);
+  }
+
+  /// Calls f(cell) for the cells from lo to hi, until a call returns true; returns whether one did.
+  template <class F>
+  static bool each_cell(const Cell& lo, const Cell& hi, F&& f) {
+    for (int z = lo[2]; z <= hi[2]; ++z) {
+      for (int y = lo[1]; y <= hi[1]; ++y) {
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          if (f(Cell{x, y, z}))
+            return true;
+        }
+      }
+    }
+    return false;
   }
 
   /// The boxes listed in `cell` that overlap `query` and whose intersection with it starts there.

@@ -7,8 +7,6 @@
 #include <limits>
 #include <optional>
 
-#include "tandem/collision/box_grid.hpp"
-
 namespace tandem {
 namespace {
 
@@ -21,27 +19,33 @@ double margin_of(const ObstacleBroadPhase::Box& box) {
   return kMargin * (1.0 + box.min.cwiseAbs().maxCoeff() + box.max.cwiseAbs().maxCoeff());
 }
 
+/// The box grown by its margin on every side, as the tree and the grid hold and query it.
+ObstacleBroadPhase::Box inflated(const ObstacleBroadPhase::Box& box) {
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_of(box));
+  return {box.min - margin, box.max + margin};
+}
+
 /// An FCL collision object whose world box is set, not computed from its geometry (FCL's is a
 /// sphere's box for a turned object; the tree holds the parts' tight boxes). Its geometry is never
 /// used: the narrow phase is the caller's.
 class BoxObject : public fcl::CollisionObjectd {
  public:
   BoxObject(const std::shared_ptr<fcl::CollisionGeometryd>& placeholder,
-            const ObstacleBroadPhase::Box& box, double margin)
+            const ObstacleBroadPhase::Box& box)
       : fcl::CollisionObjectd(placeholder) {
-    set_box(box, margin);
+    set_box(box);
   }
-  void set_box(const ObstacleBroadPhase::Box& box, double margin) {
-    aabb.min_ = box.min - Eigen::Vector3d::Constant(margin);
-    aabb.max_ = box.max + Eigen::Vector3d::Constant(margin);
+  void set_box(const ObstacleBroadPhase::Box& box) {
+    aabb.min_ = box.min;
+    aabb.max_ = box.max;
   }
 };
 
 /// The query's object: one per thread, its box set for each query, so that a query allocates
 /// nothing.
 BoxObject& query_object(const ObstacleBroadPhase::Box& box) {
-  thread_local BoxObject object(std::make_shared<fcl::Sphered>(1.0), box, 0.0);
-  object.set_box(box, margin_of(box));
+  thread_local BoxObject object(std::make_shared<fcl::Sphered>(1.0), box);
+  object.set_box(inflated(box));
   return object;
 }
 
@@ -77,22 +81,20 @@ struct ObstacleBroadPhase::Impl {
 
 ObstacleBroadPhase::ObstacleBroadPhase(const std::vector<Box>& boxes)
     : impl_(std::make_unique<Impl>()) {
+  std::vector<Box> grown;
+  grown.reserve(boxes.size());
+  for (const Box& b : boxes)
+    grown.push_back(inflated(b));
   std::vector<fcl::CollisionObjectd*> registered;
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    auto object = std::make_unique<BoxObject>(impl_->placeholder, boxes[i], margin_of(boxes[i]));
+  for (std::size_t i = 0; i < grown.size(); ++i) {
+    auto object = std::make_unique<BoxObject>(impl_->placeholder, grown[i]);
     object->setUserData(reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
     registered.push_back(object.get());
     impl_->objects.push_back(std::move(object));
   }
   impl_->tree.registerObjects(registered);
   impl_->tree.setup();
-  std::vector<BoxGrid::Box> inflated;
-  inflated.reserve(boxes.size());
-  for (const Box& b : boxes) {
-    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_of(b));
-    inflated.push_back({b.min - margin, b.max + margin});
-  }
-  impl_->grid = BoxGrid::build(inflated);
+  impl_->grid = BoxGrid::build(grown);
 }
 
 ObstacleBroadPhase::~ObstacleBroadPhase() = default;
@@ -100,8 +102,7 @@ ObstacleBroadPhase::~ObstacleBroadPhase() = default;
 bool ObstacleBroadPhase::overlapping(const Box& query, void* visit, Trampoline call) const {
   double unused = 0.0;
   if (impl_->grid) {
-    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_of(query));
-    return impl_->grid->overlapping({query.min - margin, query.max + margin},
+    return impl_->grid->overlapping(inflated(query),
                                     [&](std::size_t i) { return call(visit, i, unused); });
   }
   Query q{visit, call, &unused};

@@ -17,14 +17,13 @@
 #include <type_traits>
 #include <vector>
 
+#include "tandem/collision/box_grid.hpp"
+
 namespace tandem {
 
 class ObstacleBroadPhase {
  public:
-  struct Box {
-    Eigen::Vector3d min;
-    Eigen::Vector3d max;
-  };
+  using Box = BoxGrid::Box;
 
   /// The tree over the boxes (in the world frame; a box's index is its part's).
   explicit ObstacleBroadPhase(const std::vector<Box>& boxes);
