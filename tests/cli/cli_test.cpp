@@ -381,12 +381,33 @@ mode = ["birrt", "interactive"]
   expect_bad_input({"bench", experiment, "--shard", "3/2"}, {"--shard", "K/N", "3/2"});
   expect_bad_input({"bench", experiment, "--shard", "1/2", "--merge"}, {"--shard", "--merge"});
   expect_bad_input({"bench", experiment, "--partition", "p"}, {"--partition", "--slurm"});
+  for (const char* tasks : {"0", "1001", "nan", "-3"})
+    expect_bad_input({"bench", experiment, "--merge", "--tasks", tasks}, {"--tasks", tasks});
+  expect_bad_input({"bench", experiment, "--slurm", "--retries", "101"}, {"--retries", "101"});
+  expect_bad_input({"bench", experiment, "--slurm", "--retries", "-1"}, {"--retries", "-1"});
+  expect_bad_input({"bench", experiment, "--slurm", "--cpus-per-task", "0"},
+                   {"--cpus-per-task", "0"});
   expect_bad_input({"bench", experiment, "--out", (dir.path() / "a b").string(), "--slurm"},
                    {"--out", "without blanks"});
   // No Slurm here, or one without this partition: refused before any run, naming --slurm.
   expect_bad_input({"bench", experiment, "--out", (dir.path() / "s").string(), "--slurm",
                     "--partition", "tandem-test-no-such-partition"},
                    {"--slurm", "sbatch"});
+}
+
+// The inputs the fuzzers found (fuzz/regression) are refused on the command line too: one line
+// naming the file and the fault, exit code 2.
+TEST(Cli, FuzzFoundInputsAreBadInput) {
+  const auto regression = test::source_dir() / "fuzz" / "regression";
+  const auto experiment = (regression / "experiment" / "seeds-float-out-of-range.toml").string();
+  expect_bad_input({"bench", experiment}, {experiment, "seeds must be a positive integer"});
+  const auto journal = (regression / "journal" / "float-where-a-whole-number-goes").string();
+  expect_bad_input({"replay", journal}, {journal, "'seq' must be a whole number"});
+  // The STEP target reads IGES when the input is not STEP; the command line goes by the name.
+  TempDir dir;
+  const auto iges = (dir.path() / "refused.igs").string();
+  std::filesystem::copy_file(regression / "step" / "iges-refused-leak", iges);
+  expect_bad_input({"parts", iges}, {iges, "malformed or not IGES"});
 }
 
 TEST(Cli, BuiltinScenesCanBeListedAndExported) {
