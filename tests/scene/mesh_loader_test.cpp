@@ -133,17 +133,6 @@ std::string collada_square(const std::string& indices) {
 )";
 }
 
-/// load_mesh(file) throws an InputError naming the file and containing `fault`.
-void expect_refused(const std::filesystem::path& file, const std::string& fault) {
-  try {
-    load_mesh(file);
-    FAIL() << file << " accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(fault), std::string::npos) << e.what();
-  }
-}
-
 /// The square with one piece of its text replaced.
 std::string collada_square_with(const std::string& from, const std::string& to) {
   std::string text = collada_square("0 1 2 0 2 3");
@@ -154,17 +143,18 @@ std::string collada_square_with(const std::string& from, const std::string& to) 
 TEST(MeshLoader, RefusesColladaArraysWithoutACountAndAccessorsBeyondTheirArray) {
   test::TempDir dir;
   // assimp 5.2 read through a null pointer on this one (the cfg fuzz target's finding).
-  expect_refused(dir.write("no-count.dae", collada_square_with("count=\"12\"", "\xa7ount=\"12\"")),
-                 "<float_array> has no whole-number count");
-  expect_refused(dir.write("short.dae", collada_square_with("count=\"12\"", "count=\"11\"")),
-                 "reads beyond its array 'pos-array'");
-  expect_refused(
+  expect_rejected(dir.write("no-count.dae", collada_square_with("count=\"12\"", "\xa7ount=\"12\"")),
+                  "<float_array> has no whole-number count");
+  expect_rejected(dir.write("short.dae", collada_square_with("count=\"12\"", "count=\"11\"")),
+                  "reads beyond its array 'pos-array'");
+  expect_rejected(
       dir.write("offset.dae", collada_square_with("stride=\"3\"", "stride=\"3\" offset=\"1\"")),
       "reads beyond its array");
-  expect_refused(dir.write("elsewhere.dae", collada_square_with("#pos-array", "#other")),
-                 "names no array of the file");
-  expect_refused(dir.write("huge.dae", collada_square_with("count=\"4\"", "count=\"99999999999\"")),
-                 "<accessor> has no whole-number count");
+  expect_rejected(dir.write("elsewhere.dae", collada_square_with("#pos-array", "#other")),
+                  "names no array of the file");
+  expect_rejected(
+      dir.write("huge.dae", collada_square_with("count=\"4\"", "count=\"99999999999\"")),
+      "<accessor> has no whole-number count");
 }
 
 TEST(MeshLoader, ReadsColladaAndRefusesAnIndexListWithAStrayByte) {
@@ -174,13 +164,7 @@ TEST(MeshLoader, ReadsColladaAndRefusesAnIndexListWithAStrayByte) {
   // assimp 5.2 ran out of memory on this one (the cfg fuzz target's finding).
   const auto bad = dir.write("bad.dae", collada_square("0 1 2 0\xff"
                                                        "2 3"));
-  try {
-    load_mesh(bad);
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("bad.dae"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("<p> list"), std::string::npos) << e.what();
-  }
+  expect_rejected(bad, "<p> list");
 }
 
 }  // namespace

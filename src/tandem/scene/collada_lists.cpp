@@ -57,7 +57,7 @@ std::optional<std::string> attribute(const std::string& open, const std::string&
   return open.substr(first, last - first);
 }
 
-/// A whole-number attribute (digits only, below 2^32), or `fallback` when it is absent.
+/// A whole-number attribute (digits only, at most 9 of them), or `fallback` when it is absent.
 std::uint64_t count_attribute(const std::string& open, const std::string& key,
                               std::optional<std::uint64_t> fallback, const std::string& what,
                               const std::string& name) {
