@@ -51,6 +51,7 @@ void KdTreeNearestNeighbors::clear() {
   nodes_.assign(1, Node{});
   free_.clear();
   size_ = 0;
+  next_compaction_ = kFirstCompaction;
 }
 
 std::uint32_t KdTreeNearestNeighbors::new_node() {
@@ -82,6 +83,11 @@ void KdTreeNearestNeighbors::add(NodeId id) {
   ++size_;
   if (nodes_[n].bucket.size() > kBucketSize)
     split_leaf(n);
+  if (size_ >= next_compaction_) {
+    next_compaction_ = static_cast<std::size_t>(kCompactionGrowth * static_cast<double>(size_));
+    rebuild(0);
+    return;
+  }
 
   // Depth allowed for a kAlpha-balanced tree of this size, plus slack for the bucket level.
   const double leaves = static_cast<double>(size_) / static_cast<double>(kBucketSize) + 1.0;
@@ -114,7 +120,13 @@ void KdTreeNearestNeighbors::rebuild(std::uint32_t root) {
   std::vector<Entry> entries;
   entries.reserve(nodes_[root].count);
   collect(root, entries);
-  nodes_[root] = Node{};
+  if (root == 0) {
+    // The whole tree: into fresh slots, so that nodes are laid out depth-first.
+    nodes_.assign(1, Node{});
+    free_.clear();
+  } else {
+    nodes_[root] = Node{};
+  }
   build(root, entries.begin(), entries.end());
 }
 

@@ -22,6 +22,12 @@
 // along a line, which would make a plain k-d tree a list; the tree stays balanced as a scapegoat
 // tree does: when an insertion lands too deep, the highest unbalanced subtree on its path is
 // rebuilt at medians (amortised O(log n) per insertion).
+//
+// Insertions and those partial rebuilds scatter nodes and leaf buckets over memory, and at a
+// million points the search waits on those reads more than it computes. Each time the tree has
+// grown by kCompactionGrowth it is rebuilt whole into fresh storage: nodes depth-first, both
+// children of a node side by side, buckets allocated in the same order (amortised O(log n) per
+// insertion too; the rebuild holds a copy of the entries, 64 bytes a point, while it runs).
 
 #include <limits>
 
@@ -44,6 +50,10 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
  private:
   /// A child may hold at most this share of its parent's points before the subtree is rebuilt.
   static constexpr double kAlpha = 0.75;
+  /// The whole tree is rebuilt when it reaches kFirstCompaction points and each time it has grown
+  /// by this factor since.
+  static constexpr double kCompactionGrowth = 2.0;
+  static constexpr std::size_t kFirstCompaction = 4096;
 
   /// A point's key: translation, then the quaternion's coefficients (x, y, z, w) with w >= 0.
   using Key = Eigen::Matrix<double, 7, 1>;
@@ -84,7 +94,8 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
 
   std::uint32_t new_node();
   void split_leaf(std::uint32_t leaf);
-  /// Rebuilds the subtree at `root` balanced, reusing its node slots.
+  /// Rebuilds the subtree at `root` balanced, reusing its node slots (all of the tree, in fresh
+  /// slots, for the root).
   void rebuild(std::uint32_t root);
   /// Copies the entries below `node` to `entries` and releases its descendants' slots.
   void collect(std::uint32_t node, std::vector<Entry>& entries);
@@ -101,6 +112,7 @@ class KdTreeNearestNeighbors final : public NearestNeighbors {
   std::vector<std::uint32_t> free_;  ///< node slots released by rebuilds
   std::vector<std::uint32_t> path_;  ///< scratch for add()
   std::size_t size_ = 0;
+  std::size_t next_compaction_ = kFirstCompaction;
 };
 
 }  // namespace tandem
