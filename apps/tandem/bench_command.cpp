@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "tandem/core/error.hpp"
 #include "tandem/experiments/merge_shards.hpp"
+#include "tandem/experiments/runs_folder.hpp"
 
 namespace tandem::cli {
 namespace {
@@ -50,7 +51,7 @@ std::vector<RunRecord> recorded_runs(const BenchArgs& args, const LoadedBench& b
   if (!std::filesystem::exists(file))
     throw InputError(file.string(), "does not exist: run the experiment first");
   std::map<std::string, RunRecord> done;
-  index_records(read_records(file), done);
+  index_records(load_runs_file(file, bench.problem, bench.experiment, false, nullptr), done);
   return ordered_records(bench.experiment, seeds(args, bench.experiment), done);
 }
 

@@ -347,6 +347,16 @@ mode = ["birrt", "interactive"]
   expect_bad_input(
       {"bench", experiment.string(), "--out", (dir.path() / "fresh").string(), "--report-only"},
       {"runs.jsonl", "run the experiment first"});
+  // A report of another experiment's runs (another time limit) is refused, not mixed.
+  const auto other = dir.write("y.toml", R"(name = "x"
+problem = "g.toml"
+seeds = 2
+time_limit = 30
+[[sweep]]
+mode = ["birrt", "interactive"]
+)");
+  expect_bad_input({"bench", other.string(), "--out", out, "--report-only"},
+                   {"runs.jsonl", "time limit of 20 s", "Use another --out folder"});
 }
 
 TEST(Cli, BenchShardsMergeIntoTheReportOfOneRun) {

@@ -13,6 +13,7 @@
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
 #include "tandem/experiments/report.hpp"
+#include "tandem/experiments/runs_folder.hpp"
 
 namespace tandem {
 namespace {
@@ -66,7 +67,7 @@ TEST(BenchRunner, RunsEverythingChecksTheSolutionsAndResumesWhereItStopped) {
         << first.records[i].key();
     EXPECT_EQ(resumed.records[i].nodes, first.records[i].nodes);
   }
-  EXPECT_EQ(read_records(runs).size(), 6u);
+  EXPECT_EQ(load_runs_file(runs, f.problem, f.experiment, false, nullptr).size(), 6u);
 }
 
 TEST(BenchRunner, RefusesAFolderOfAnotherExperimentAndAnOperatorWithoutAGuide) {
@@ -113,7 +114,8 @@ TEST(BenchRunner, AStopFlagInterruptsWithoutRecordingTheInterruptedRuns) {
   const BenchResult r = run_experiment(f.experiment, f.problem, options);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.ran, 0u);
-  EXPECT_TRUE(read_records(dir.path() / "runs.jsonl").empty());
+  EXPECT_TRUE(
+      load_runs_file(dir.path() / "runs.jsonl", f.problem, f.experiment, false, nullptr).empty());
 }
 
 TEST(BenchRunner, InHumanTimeRunsOneAtATimeWithAPersonOnItsOwnThreadAndTwoCoresForAPlannerAlone) {

@@ -90,7 +90,8 @@ TEST(Shards, MergedShardsGiveTheRunsOfOneWholeRun) {
   // Report order, as a whole run gives it.
   for (std::size_t i = 0; i < 6; ++i)
     EXPECT_EQ(merged.records[i].key(), all.records[i].key());
-  EXPECT_EQ(read_records(part.out_dir / kRunsFile).size(), 6u);
+  EXPECT_EQ(
+      load_runs_file(part.out_dir / kRunsFile, f.problem, f.experiment, false, nullptr).size(), 6u);
 }
 
 TEST(Shards, MergeNamesTheShardsWithRunsMissingAndKeepsOtherRuns) {
@@ -105,7 +106,8 @@ TEST(Shards, MergeNamesTheShardsWithRunsMissingAndKeepsOtherRuns) {
   EXPECT_THAT(merged.incomplete, ElementsAre(1, 3));
   // With one seed, the runs of the other seeds are not the experiment's but stay in the file.
   const MergeResult one_seed = merge_shards(f.experiment, f.problem, dir.path(), 1, 3, nullptr);
-  EXPECT_EQ(read_records(dir.path() / kRunsFile).size(), 2u);
+  EXPECT_EQ(load_runs_file(dir.path() / kRunsFile, f.problem, f.experiment, false, nullptr).size(),
+            2u);
   EXPECT_LE(one_seed.records.size(), 2u);
   EXPECT_THROW((void)merge_shards(f.experiment, f.problem, dir.path() / "none", 3, 3, nullptr),
                InputError);
