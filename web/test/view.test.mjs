@@ -254,7 +254,9 @@ test('the solution stands out and plays with the trees dimmed; a recorded WebM o
     await page.click('#record-path');
     await waitFor(page, (u) => window.tandem.recording.url !== u, first, 30000);
     const whole = await page.evaluate(() => window.tandem.recording);
-    assert.ok(whole.seconds > 7 && whole.seconds < 12 && whole.size > rec.size, JSON.stringify(whole));
+    // At least the path's 8 s; longer when frames take over 0.1 s (the playback's step is capped
+    // there, as on a loaded CI machine), so no upper bound: the stop at the goal is checked below.
+    assert.ok(whole.seconds > 7 && whole.size > rec.size, JSON.stringify(whole));
     assert.equal(await page.locator('#play').textContent(), 'play path', 'it stops at the goal');
   } finally {
     await stopTandem(run);
