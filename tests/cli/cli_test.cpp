@@ -38,6 +38,16 @@ position = [-2, 0, 0]
 position = [2, 0, 0]
 )";
 
+/// An experiment on g.toml (the wall scenario with its guide): two seeds of BiRRT and of the
+/// interactive planner.
+constexpr const char* kWallExperiment = R"(name = "x"
+problem = "g.toml"
+seeds = 2
+time_limit = 20
+[[sweep]]
+mode = ["birrt", "interactive"]
+)";
+
 std::string with(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   if (at == std::string::npos)
@@ -323,13 +333,7 @@ TEST(Cli, InteractivePlansCountNodesBySourceAndRepeatTheirTree) {
 TEST(Cli, BenchRunsAnExperimentAndRejectsBadFiles) {
   TempDir dir;
   dir.write("g.toml", std::string(kWallScenario) + kGuide);
-  const auto experiment = dir.write("x.toml", R"(name = "x"
-problem = "g.toml"
-seeds = 2
-time_limit = 20
-[[sweep]]
-mode = ["birrt", "interactive"]
-)");
+  const auto experiment = dir.write("x.toml", kWallExperiment);
   const auto out = (dir.path() / "out").string();
   const test::RunResult r = run_tandem({"bench", experiment.string(), "--out", out, "--jobs", "2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -348,13 +352,8 @@ mode = ["birrt", "interactive"]
       {"bench", experiment.string(), "--out", (dir.path() / "fresh").string(), "--report-only"},
       {"runs.jsonl", "run the experiment first"});
   // A report of another experiment's runs (another time limit) is refused, not mixed.
-  const auto other = dir.write("y.toml", R"(name = "x"
-problem = "g.toml"
-seeds = 2
-time_limit = 30
-[[sweep]]
-mode = ["birrt", "interactive"]
-)");
+  const auto other =
+      dir.write("y.toml", with(kWallExperiment, "time_limit = 20", "time_limit = 30"));
   expect_bad_input({"bench", other.string(), "--out", out, "--report-only"},
                    {"runs.jsonl", "time limit of 20 s", "Use another --out folder"});
 }
@@ -362,14 +361,7 @@ mode = ["birrt", "interactive"]
 TEST(Cli, BenchShardsMergeIntoTheReportOfOneRun) {
   TempDir dir;
   dir.write("g.toml", std::string(kWallScenario) + kGuide);
-  const auto experiment = dir.write("x.toml", R"(name = "x"
-problem = "g.toml"
-seeds = 2
-time_limit = 20
-[[sweep]]
-mode = ["birrt", "interactive"]
-)")
-                              .string();
+  const auto experiment = dir.write("x.toml", kWallExperiment).string();
   const auto out = (dir.path() / "out").string();
   const test::RunResult one = run_tandem({"bench", experiment, "--out", out, "--shard", "1/2"});
   ASSERT_EQ(one.exit_code, 0) << one.err;
