@@ -1,7 +1,8 @@
 // The workspace-guided sampler on Twistycool (a part that must pass a wall's hole): its guide
 // crosses the wall through the hole, its samples follow the guide for the share asked, it retires
 // as long after the trees cover the guide as they took to, and before its warm-up, or with a share
-// of 0, it draws exactly the uniform samples.
+// of 0, it draws exactly the uniform samples. The checker's guide blocks, built once with its grid,
+// give every start and goal the route that coarsening the grid for that query gives.
 
 #include "tandem/sampling/guided_sampler.hpp"
 
@@ -13,6 +14,7 @@
 #include "support/test_support.hpp"
 #include "tandem/collision/distance_grid.hpp"
 #include "tandem/collision/motion_validator.hpp"
+#include "tandem/collision/workspace_guide.hpp"
 #include "tandem/scene/ompl_app_problem.hpp"
 
 namespace tandem {
@@ -143,6 +145,31 @@ TEST_F(GuidedSamplerTest, BeforeTheWarmUpOrWithoutAShareItDrawsTheUniformSamples
       ASSERT_TRUE(q.t == out.front().q.t && q.q.coeffs() == out.front().q.q.coeffs()) << i;
     }
   }
+}
+
+TEST_F(GuidedSamplerTest, TheBlocksBuiltWithTheGridGiveTheRoutesOfACoarseningPerQuery) {
+  const DistanceGrid& grid = *checker_->distance_grid();
+  ASSERT_NE(checker_->guide_blocks(), nullptr);
+  const GuideBlocks& blocks = *checker_->guide_blocks();
+  const Bounds& bounds = problem_->space.bounds();
+  const double open = checker_->object_extent().half_extents.maxCoeff();
+  Rng rng(11);
+  int routes = 0;
+  for (int k = 0; k < 12; ++k) {
+    const Eigen::Vector3d from = k == 0 ? problem_->start.t : problem_->space.sample_uniform(rng).t;
+    const Eigen::Vector3d to = k == 0 ? problem_->goal.t : problem_->space.sample_uniform(rng).t;
+    const std::vector<GuidePoint> once = find_guide(grid, blocks, from, to, open);
+    const std::vector<GuidePoint> per_query = find_guide(grid, bounds, from, to, open);
+    ASSERT_EQ(once.size(), per_query.size()) << k;
+    for (std::size_t i = 0; i < once.size(); ++i) {
+      EXPECT_EQ(once[i].point, per_query[i].point) << k << ", point " << i;
+      EXPECT_EQ(once[i].clearance, per_query[i].clearance) << k << ", point " << i;
+    }
+    routes += once.empty() ? 0 : 1;
+  }
+  EXPECT_GE(routes, 6) << "most random pairs of Twistycool's free or walled points are joined";
+  checker_->drop_distance_grid();
+  EXPECT_EQ(checker_->guide_blocks(), nullptr);
 }
 
 }  // namespace

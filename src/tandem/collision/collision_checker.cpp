@@ -20,6 +20,7 @@
 #include "tandem/collision/distance_grid.hpp"
 #include "tandem/collision/obstacle_broad_phase.hpp"
 #include "tandem/collision/sphere_tree.hpp"
+#include "tandem/collision/workspace_guide.hpp"
 #include "tandem/core/error.hpp"
 
 namespace tandem {
@@ -212,6 +213,9 @@ struct Prefilter {
   double spacing;
   DistanceGrid grid;
   SphereTree object;
+  /// The workspace guide's step 1, which depends on the grid and the bounds only: built here,
+  /// once per problem, so that a planner's route (on its clock) starts from it.
+  GuideBlocks blocks;
 };
 
 std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const Bounds& bounds,
@@ -228,8 +232,9 @@ std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const B
   for (const FclPart& part : g.object)
     add_prefilter_shape(part, part.pose, triangles, solids);
   SphereTree object(triangles, solids, grid.spacing());
+  GuideBlocks blocks(grid, bounds);
   return std::make_shared<const Prefilter>(
-      Prefilter{bounds, spacing, std::move(grid), std::move(object)});
+      Prefilter{bounds, spacing, std::move(grid), std::move(object), std::move(blocks)});
 }
 
 /// The nearest points of one part of the object (at X_WP) and one part of an obstacle, or a
@@ -521,6 +526,10 @@ bool CollisionChecker::has_distance_grid() const {
 
 const DistanceGrid* CollisionChecker::distance_grid() const {
   return impl_->active != nullptr ? &impl_->active->grid : nullptr;
+}
+
+const GuideBlocks* CollisionChecker::guide_blocks() const {
+  return impl_->active != nullptr ? &impl_->active->blocks : nullptr;
 }
 
 ObjectExtent CollisionChecker::object_extent() const {

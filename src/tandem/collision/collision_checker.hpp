@@ -45,6 +45,7 @@ struct ObjectExtent {
 };
 
 class DistanceGrid;
+class GuideBlocks;
 
 /// How a query finds the obstacle parts to hand to FCL: by testing every part's box in turn
 /// (linear), or through the broad phase of their boxes (obstacle_broad_phase.hpp: a grid for
@@ -117,6 +118,9 @@ class CollisionChecker {
   bool has_distance_grid() const;
   /// The distance grid in use, or null (immutable; shared with the clones).
   const DistanceGrid* distance_grid() const;
+  /// The workspace guide's coarse blocks of that grid inside its bounds (workspace_guide.hpp),
+  /// built with it, or null without a grid (immutable; shared with the clones).
+  const GuideBlocks* guide_blocks() const;
 
   /// The broad phase for the queries of this checker (clones made afterwards take it).
   void use_broad_phase(BroadPhase broad_phase);

@@ -20,9 +20,14 @@
 // The grid's bounds are conservative and the blocks approximate, so the guide is only a hint: a
 // route may be one the part cannot take (it turns, it is too big); what uses it checks everything.
 //
-// Threading: a pure function of an immutable grid.
+// Step 1 depends on the grid and the bounds only, not on the start and goal: GuideBlocks is built
+// once per problem with the grid (CollisionChecker::guide_blocks), before a planner's clock starts,
+// and every later route (steps 2-4) starts from it.
+//
+// Threading: GuideBlocks is immutable once built; find_guide is a pure function of it and the grid.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "tandem/collision/distance_grid.hpp"
@@ -38,8 +43,68 @@ struct GuidePoint {
 /// Step 1's largest number of blocks.
 inline constexpr int kMaxGuideBlocks = 1 << 15;
 
-/// The route from `from` to `to` through the cells whose centres are in `bounds`, or nothing when
+/// Step 1: the grid's cells whose centres are in `bounds`, coarsened to at most kMaxGuideBlocks
+/// blocks, each standing for its most open cell.
+class GuideBlocks {
+ public:
+  GuideBlocks(const DistanceGrid& grid, const Bounds& bounds);
+
+  int size() const { return static_cast<int>(clearance_.size()); }
+  /// The block holding p, or -1 outside the grid.
+  int block_of(const DistanceGrid& grid, const Eigen::Vector3d& p) const;
+  /// Its most open cell's bound (-inf outside the bounds) and that cell's centre.
+  double clearance(int i) const { return clearance_[static_cast<std::size_t>(i)]; }
+  const Eigen::Vector3d& centre(int i) const { return centre_[static_cast<std::size_t>(i)]; }
+  /// Free space, as far as the grid knows: a positive bound.
+  bool open(int i) const { return clearance(i) > 0.0; }
+  /// Visits the 26 neighbours of block i that are inside the coarse grid.
+  template <class Visit>
+  void for_neighbours(int i, Visit visit) const;
+
+ private:
+  int index(const Eigen::Vector3i& b) const {
+    return (b.z() * dims_.y() + b.y()) * dims_.x() + b.x();
+  }
+  Eigen::Vector3i cell(int i) const {
+    return {i % dims_.x(), (i / dims_.x()) % dims_.y(), i / (dims_.x() * dims_.y())};
+  }
+  bool inside(const Eigen::Vector3i& b) const {
+    return (b.array() >= 0).all() && (b.array() < dims_.array()).all();
+  }
+
+  Eigen::Vector3i dims_;
+  int factor_ = 1;
+  std::vector<double> clearance_;
+  std::vector<Eigen::Vector3d> centre_;
+  std::array<int, 26> offsets_{};  ///< index(c + d) - index(c) for the 26 d, z outermost
+};
+
+template <class Visit>
+void GuideBlocks::for_neighbours(int i, Visit visit) const {
+  const Eigen::Vector3i c = cell(i);
+  if ((c.array() > 0).all() && (c.array() < dims_.array() - 1).all()) {
+    for (int offset : offsets_)  // all 26 inside, in the order of the loops below
+      visit(i + offset);
+    return;
+  }
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Eigen::Vector3i n = c + Eigen::Vector3i(dx, dy, dz);
+        if ((dx | dy | dz) != 0 && inside(n))
+          visit(index(n));
+      }
+    }
+  }
+}
+
+/// Steps 2-4: the route from `from` to `to` through the blocks (of this grid), or nothing when
 /// the grid does not join them there.
+std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const GuideBlocks& blocks,
+                                   const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                   double open);
+
+/// The same, coarsening the grid first (step 1).
 std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const Bounds& bounds,
                                    const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                                    double open);

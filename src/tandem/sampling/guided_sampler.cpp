@@ -11,11 +11,12 @@ GuidedSampler::GuidedSampler(const SE3Space& space, const CollisionChecker& chec
 void GuidedSampler::find() {
   guide_.emplace();
   const DistanceGrid* grid = checker_.distance_grid();
-  if (grid == nullptr || space_.planar())
+  const GuideBlocks* blocks = checker_.guide_blocks();
+  if (grid == nullptr || blocks == nullptr || space_.planar())
     return;
   const double open = checker_.object_extent().half_extents.maxCoeff();
   least_spread_ = 0.1 * open;
-  *guide_ = find_guide(*grid, space_.bounds(), start_, goal_, open);
+  *guide_ = find_guide(*grid, *blocks, start_, goal_, open);
   double s = 0.0;
   for (std::size_t k = 0; k < guide_->size(); ++k) {
     if (k > 0)
