@@ -1,5 +1,6 @@
 // The workspace guide on the distance grid: a route through a wall's hole, through the wider of
-// two holes, none through a closed wall, and none over a wall's top when the bounds leave no room.
+// two holes, none through a closed wall, and none over a wall's top when the bounds leave no room;
+// the blocks' neighbours are the 26 around each block that the coarse grid holds, in z, y, x order.
 
 #include "tandem/collision/workspace_guide.hpp"
 
@@ -40,7 +41,8 @@ std::vector<GuidePoint> at_the_wall(const std::vector<GuidePoint>& guide) {
 
 TEST(WorkspaceGuide, TheRouteGoesThroughTheHole) {
   const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, wall(0.4, {1.5}));
-  const std::vector<GuidePoint> guide = find_guide(grid, kBounds, {-1, 0, -2}, {-1, 0, 2}, 1.0);
+  const std::vector<GuidePoint> guide =
+      find_guide(grid, GuideBlocks(grid, kBounds), {-1, 0, -2}, {-1, 0, 2}, 1.0);
   ASSERT_GE(guide.size(), 3u);
   EXPECT_TRUE(guide.front().point.isApprox(Eigen::Vector3d(-1, 0, -2)));
   EXPECT_TRUE(guide.back().point.isApprox(Eigen::Vector3d(-1, 0, 2)));
@@ -67,12 +69,13 @@ TEST(WorkspaceGuide, TheWiderOfTwoHolesIsTaken) {
         {{2.6, -0.6, -0.1}, {5, 0.6, 0.1}}};
     return b;
   }());
-  const std::vector<GuidePoint> guide = find_guide(holes, kBounds, {0, 0, -2}, {0, 0, 2}, 1.0);
+  const std::vector<GuidePoint> guide =
+      find_guide(holes, GuideBlocks(holes, kBounds), {0, 0, -2}, {0, 0, 2}, 1.0);
   const std::vector<GuidePoint> crossing = at_the_wall(guide);
   ASSERT_FALSE(crossing.empty());
   for (const GuidePoint& g : crossing)
     EXPECT_NEAR(g.point.x(), 2.0, 0.6) << g.point.transpose();
-  EXPECT_TRUE(find_guide(grid, kBounds, {0, 0, -2}, {0, 0, 2}, 1.0).empty())
+  EXPECT_TRUE(find_guide(grid, GuideBlocks(grid, kBounds), {0, 0, -2}, {0, 0, 2}, 1.0).empty())
       << "a closed wall leaves no route";
 }
 
@@ -80,14 +83,49 @@ TEST(WorkspaceGuide, TheRouteStaysInTheBounds) {
   // A wall across x = 0 up to z = 1; above it there is room only if the bounds reach above 1.
   const std::vector<DistanceGrid::Box> low_wall = {{{-0.1, -5, -5}, {0.1, 5, 1}}};
   const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, low_wall);
-  const std::vector<GuidePoint> over = find_guide(grid, kBounds, {-2, 0, 0}, {2, 0, 0}, 1.0);
+  const std::vector<GuidePoint> over =
+      find_guide(grid, GuideBlocks(grid, kBounds), {-2, 0, 0}, {2, 0, 0}, 1.0);
   ASSERT_FALSE(over.empty());
   double highest = -10.0;
   for (const GuidePoint& g : over)
     highest = std::max(highest, g.point.z());
   EXPECT_GT(highest, 1.0) << "the route passes over the wall";
   const Bounds below{{-3, -3, -3}, {3, 3, 0.8}};
-  EXPECT_TRUE(find_guide(grid, below, {-2, 0, 0}, {2, 0, 0}, 1.0).empty());
+  EXPECT_TRUE(find_guide(grid, GuideBlocks(grid, below), {-2, 0, 0}, {2, 0, 0}, 1.0).empty());
+}
+
+TEST(WorkspaceGuide, EachBlockVisitsTheNeighboursTheCoarseGridHoldsInZYXOrder) {
+  // Narrower than long in each direction, so that inner blocks (the precomputed offsets) and every
+  // kind of border block are visited.
+  const Bounds bounds{{-1, -2, -3}, {1, 2, 3}};
+  const DistanceGrid grid({bounds.min, bounds.max}, 0.05, {}, wall(0.4, {0.0}));
+  const GuideBlocks blocks(grid, bounds);
+  const Eigen::Vector3i d = blocks.dims();
+  ASSERT_EQ(d.prod(), blocks.size());
+  ASSERT_TRUE((d.array() >= 3).all()) << d.transpose();
+  int inner = 0;
+  for (int z = 0; z < d.z(); ++z) {
+    for (int y = 0; y < d.y(); ++y) {
+      for (int x = 0; x < d.x(); ++x) {
+        std::vector<int> expected;
+        for (int dz = -1; dz <= 1; ++dz) {
+          for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+              const int nx = x + dx, ny = y + dy, nz = z + dz;
+              if ((dx | dy | dz) != 0 && nx >= 0 && ny >= 0 && nz >= 0 && nx < d.x() &&
+                  ny < d.y() && nz < d.z())
+                expected.push_back((nz * d.y() + ny) * d.x() + nx);
+            }
+          }
+        }
+        std::vector<int> visited;
+        blocks.for_neighbours((z * d.y() + y) * d.x() + x, [&](int n) { visited.push_back(n); });
+        ASSERT_EQ(visited, expected) << "block " << x << ", " << y << ", " << z;
+        inner += expected.size() == 26 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(inner, (d.x() - 2) * (d.y() - 2) * (d.z() - 2));
 }
 
 }  // namespace

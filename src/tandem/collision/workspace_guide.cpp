@@ -170,10 +170,4 @@ std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const GuideBlocks& 
   return guide;
 }
 
-std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const Bounds& bounds,
-                                   const Eigen::Vector3d& from, const Eigen::Vector3d& to,
-                                   double open) {
-  return find_guide(grid, GuideBlocks(grid, bounds), from, to, open);
-}
-
 }  // namespace tandem

@@ -50,6 +50,8 @@ class GuideBlocks {
   GuideBlocks(const DistanceGrid& grid, const Bounds& bounds);
 
   int size() const { return static_cast<int>(clearance_.size()); }
+  /// Blocks along x, y and z; block (x, y, z) has index (z dims.y + y) dims.x + x.
+  const Eigen::Vector3i& dims() const { return dims_; }
   /// The block holding p, or -1 outside the grid.
   int block_of(const DistanceGrid& grid, const Eigen::Vector3d& p) const;
   /// Its most open cell's bound (-inf outside the bounds) and that cell's centre.
@@ -101,11 +103,6 @@ void GuideBlocks::for_neighbours(int i, Visit visit) const {
 /// Steps 2-4: the route from `from` to `to` through the blocks (of this grid), or nothing when
 /// the grid does not join them there.
 std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const GuideBlocks& blocks,
-                                   const Eigen::Vector3d& from, const Eigen::Vector3d& to,
-                                   double open);
-
-/// The same, coarsening the grid first (step 1).
-std::vector<GuidePoint> find_guide(const DistanceGrid& grid, const Bounds& bounds,
                                    const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                                    double open);
 
