@@ -124,5 +124,21 @@ TEST(Journal, RefusesAFloatOrNegativeWhereAWholeNumberGoes) {
   }
 }
 
+// A journal's poses are read bit for bit, not normalised: one that config_json did not write is
+// refused (a huge quaternion made FCL's distance assert in the replay; journal fuzz target).
+TEST(Journal, RefusesAPoseThatIsNotAUnitQuaternion) {
+  test::TempDir dir;
+  const std::string header = header_line(dir);
+  for (const std::string q : {"0,0,0,0,0,-2.1e306,1", "0,0,0,0,0,0,2", "0,0,0,0,0,0,0"}) {
+    const auto bad = dir.write("q.jsonl", header +
+                                              "{\"op\":1,\"seq\":1,\"t\":0.5,\"pace\":0.5,"
+                                              "\"q\":[" +
+                                              q + "],\"v\":[0,0,0,0,0,0],\"b\":0}\n");
+    EXPECT_THAT(test::error_message<InputError>([&] { return read_journal(bad); }),
+                HasSubstr("line 2: a pose is x y z and a unit quaternion"))
+        << q;
+  }
+}
+
 }  // namespace
 }  // namespace tandem

@@ -58,6 +58,10 @@ Config config_from_json(const json& j) {
   q.t = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
   q.q = Eigen::Quaterniond(j[6].get<double>(), j[3].get<double>(), j[4].get<double>(),
                            j[5].get<double>());
+  // Read back bit for bit, so not normalised: a pose that is not a unit quaternion was not written
+  // by config_json (FCL asserts on the transform of a huge one: a finding of the journal target).
+  if (!q.t.allFinite() || !(std::abs(q.q.norm() - 1.0) <= 1e-6))
+    throw std::invalid_argument("a pose is x y z and a unit quaternion qx qy qz qw");
   return q;
 }
 

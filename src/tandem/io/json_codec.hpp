@@ -51,8 +51,8 @@ InteractionSettings interaction_from_json(const nlohmann::json& j);
 
 /// [x, y, z, qx, qy, qz, qw]
 nlohmann::json config_json(const Config& q);
-/// Throws std::invalid_argument unless it is an array of 7 numbers (nlohmann's exception for a
-/// non-number).
+/// Throws std::invalid_argument unless it is an array of 7 numbers, a finite position and a unit
+/// quaternion (within 1e-6), as config_json writes (nlohmann's exception for a non-number).
 Config config_from_json(const nlohmann::json& j);
 
 }  // namespace tandem
