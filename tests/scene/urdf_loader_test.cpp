@@ -101,6 +101,38 @@ TEST(UrdfLoader, RejectsMalformedFiles) {
               HasSubstr("no link has collision or visual geometry"));
 }
 
+// urdfdom accepts joints that form a loop. Reached from the root, the walk down the tree never
+// ended (a stack overflow); out of its reach, the loop's links were dropped without a word, and
+// urdfdom's model leaked (a finding of the scenario fuzz target).
+TEST(UrdfLoader, RejectsJointsThatFormALoop) {
+  TempDir dir;
+  auto urdf = [&](const std::string& name, const std::string& joints) {
+    return dir.write(name,
+                     "<robot name='x'>"
+                     "<link name='base'><collision><geometry><box size='1 1 1'/></geometry>"
+                     "</collision></link>"
+                     "<link name='a'><collision><geometry><sphere radius='1'/></geometry>"
+                     "</collision></link>"
+                     "<link name='b'><collision><geometry><sphere radius='1'/></geometry>"
+                     "</collision></link>" +
+                         joints + "</robot>");
+  };
+  auto joint = [](const std::string& name, const std::string& parent, const std::string& child) {
+    return "<joint name='" + name + "' type='fixed'><parent link='" + parent + "'/><child link='" +
+           child + "'/></joint>";
+  };
+  const std::string a_b = joint("ab", "a", "b"), b_a = joint("ba", "b", "a");
+  EXPECT_THAT(expect_error(urdf("reached.urdf", joint("base_a", "base", "a") + a_b + b_a),
+                           UrdfRole::obstacle),
+              HasSubstr("is the child of two joints (the joints form a loop)"));
+  EXPECT_THAT(expect_error(urdf("island.urdf", a_b + b_a), UrdfRole::obstacle),
+              HasSubstr("link 'a' is not in the tree of joints from the root link 'base' (the "
+                        "joints form a loop)"));
+  EXPECT_EQ(load_urdf(urdf("tree.urdf", joint("base_a", "base", "a") + a_b), UrdfRole::obstacle, {})
+                .parts.size(),
+            3u);
+}
+
 TEST(UrdfLoader, RejectsNonsensicalSizes) {
   TempDir dir;
   auto urdf = [&](const std::string& name, const std::string& geometry) {

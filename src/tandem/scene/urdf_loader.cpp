@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "tandem/core/error.hpp"
@@ -89,27 +90,61 @@ Geometry to_geometry(const urdf::Geometry& g, const std::string& source, const s
   throw InputError(source, where + "unsupported geometry type");
 }
 
+/// The URDF text parsed by urdfdom. Throws InputError with urdfdom's own reason.
+urdf::ModelInterfaceSharedPtr parse_model(const std::string& text, const std::string& source) {
+  // console_bridge's handler is process-global.
+  static std::mutex mutex;
+  std::lock_guard<std::mutex> lock(mutex);
+  CapturingHandler handler;
+  console_bridge::useOutputHandler(&handler);
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(text);
+  console_bridge::restorePreviousOutputHandler();
+  if (!model) {
+    throw InputError(
+        source, "not a valid URDF" +
+                    (handler.first_error_.empty() ? std::string() : ": " + handler.first_error_));
+  }
+  return model;
+}
+
+/// urdfdom's model, whose links' lists of children are cut when it goes: urdfdom holds a link's
+/// children by shared_ptr, so joints that form a loop make a cycle that would never be freed (a
+/// finding of the scenario fuzz target).
+class ParsedModel {
+ public:
+  explicit ParsedModel(urdf::ModelInterfaceSharedPtr model) : model_(std::move(model)) {}
+  ~ParsedModel() {
+    for (auto& [name, link] : model_->links_) {
+      link->child_links.clear();
+      link->child_joints.clear();
+    }
+  }
+  ParsedModel(const ParsedModel&) = delete;
+  ParsedModel& operator=(const ParsedModel&) = delete;
+  const urdf::ModelInterface* operator->() const { return model_.get(); }
+
+ private:
+  urdf::ModelInterfaceSharedPtr model_;
+};
+
+/// Throws InputError unless every link was reached once from the root: urdfdom accepts joints
+/// that form a loop, whose links are then out of the tree or on an endless walk down it.
+void require_tree(const ParsedModel& model, const std::set<std::string>& reached,
+                  const std::string& source) {
+  for (const auto& [name, link] : model->links_) {
+    if (reached.count(name) == 0) {
+      throw InputError(source, "link '" + name +
+                                   "' is not in the tree of joints from the root link '" +
+                                   model->getRoot()->name + "' (the joints form a loop)");
+    }
+  }
+}
+
 }  // namespace
 
 Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAccess& access) {
   const std::string source = file.string();
-  const std::string text = read_text_file(file);
-
-  urdf::ModelInterfaceSharedPtr model;
-  {
-    // console_bridge's handler is process-global.
-    static std::mutex mutex;
-    std::lock_guard<std::mutex> lock(mutex);
-    CapturingHandler handler;
-    console_bridge::useOutputHandler(&handler);
-    model = urdf::parseURDF(text);
-    console_bridge::restorePreviousOutputHandler();
-    if (!model) {
-      throw InputError(
-          source, "not a valid URDF" +
-                      (handler.first_error_.empty() ? std::string() : ": " + handler.first_error_));
-    }
-  }
+  const ParsedModel model(parse_model(read_text_file(file), source));
   const urdf::LinkConstSharedPtr root = model->getRoot();
   if (!root)
     throw InputError(source, "the URDF has no root link");
@@ -117,8 +152,13 @@ Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAcces
   Body body;
   body.name = model->getName();
   bool have_color = false;
+  std::set<std::string> reached;
   std::function<void(const urdf::LinkConstSharedPtr&, const Eigen::Isometry3d&)> visit =
       [&](const urdf::LinkConstSharedPtr& link, const Eigen::Isometry3d& X_RL) {
+        if (!reached.insert(link->name).second) {
+          throw InputError(source, "link '" + link->name +
+                                       "' is the child of two joints (the joints form a loop)");
+        }
         const bool use_collision = !link->collision_array.empty() || link->collision;
         if (use_collision) {
           auto add = [&](const urdf::CollisionSharedPtr& c) {
@@ -147,7 +187,8 @@ Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAcces
           for (const auto& v : link->visual_array) {
             if (v && v->material) {
               const auto& c = v->material->color;
-              body.color = {c.r, c.g, c.b, c.a > 0.0f ? static_cast<double>(c.a) : 1.0};
+              body.color = {static_cast<double>(c.r), static_cast<double>(c.g),
+                            static_cast<double>(c.b), c.a > 0.0f ? static_cast<double>(c.a) : 1.0};
               have_color = true;
               break;
             }
@@ -166,6 +207,7 @@ Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAcces
         }
       };
   visit(root, Eigen::Isometry3d::Identity());
+  require_tree(model, reached, source);
   if (body.parts.empty())
     throw InputError(source, "no link has collision or visual geometry");
   return body;
