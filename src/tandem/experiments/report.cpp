@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -207,7 +208,7 @@ struct PlotFrame {
 
 /// The frame whose decades hold every positive value and interval of the series.
 PlotFrame plot_frame(const std::vector<PlotSeries>& series, std::size_t labels) {
-  double lo = INFINITY, hi = -INFINITY;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& s : series) {
     for (const auto& p : s.points) {
       if (p.value <= 0.0)

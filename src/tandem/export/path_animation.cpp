@@ -12,7 +12,7 @@ namespace tandem {
 namespace {
 
 constexpr int kSegments = 48;  // facets around a circle in the tessellated primitives
-constexpr float kEnvelopeAlpha = 0.35f;
+constexpr double kEnvelopeAlpha = 0.35;
 
 /// Appends to one buffer and indexes it with views and accessors.
 class GlbBuilder {

@@ -25,6 +25,7 @@
 #include <cctype>
 #include <cmath>
 #include <gp_Quaternion.hxx>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <set>
@@ -308,7 +309,7 @@ const CadNode& CadAssembly::part(const std::string& name, const std::string& sou
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> CadAssembly::bounding_box() const {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const CadNode& n : nodes) {
     for (const Eigen::Vector3d& v : n.mesh.vertices) {
       const Eigen::Vector3d w = n.placement * v;

@@ -1,6 +1,7 @@
 #include "tandem/scene/take_out.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "tandem/core/error.hpp"
 #include "tandem/scene/cad_scene.hpp"
@@ -13,7 +14,7 @@ Config nearest_exit(const GoalRegion& region, const Config& seat) {
   const auto [lo, hi] = region.posed_box(seat);
   const double clear = 0.01 * region.margin;  // strictly outside
   Config best = seat;
-  double shortest = INFINITY;
+  double shortest = std::numeric_limits<double>::infinity();
   for (int axis = 0; axis < 3; ++axis) {
     for (double sign : {-1.0, 1.0}) {
       const double move =
