@@ -18,8 +18,8 @@ enum class UrdfRole {
 };
 
 /// The body's parts are posed in the URDF root link's frame. Throws InputError naming the file for
-/// a missing or malformed file, a non-positive or non-finite size or scale, an unusable mesh, or
-/// (for an object) a movable joint.
+/// a missing or malformed file, a non-positive or non-finite size or scale, an unusable mesh, joints
+/// that form a loop (urdfdom accepts them), or (for an object) a movable joint.
 Body load_urdf(const std::filesystem::path& file, UrdfRole role, const FileAccess& access);
 
 }  // namespace tandem
