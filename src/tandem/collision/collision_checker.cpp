@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tandem/collision/distance_grid.hpp"
+#include "tandem/collision/mesh_proximity.hpp"
 #include "tandem/collision/obstacle_broad_phase.hpp"
 #include "tandem/collision/sphere_tree.hpp"
 #include "tandem/collision/workspace_guide.hpp"
@@ -52,8 +53,9 @@ void check_positive(double v, const std::string& body, const char* what) {
   }
 }
 
-/// The FCL models of a part: for a mesh, an OBBRSS tree for distances and an OBB tree for yes/no
-/// collision (faster: moveit2 #2534; measured with tandem-check-costs); for a primitive, one shape.
+/// The FCL models of a part: for a mesh, an OBBRSS tree for nearest points and an OBB tree for
+/// yes/no collision (faster: moveit2 #2534; measured with tandem-check-costs) and clearance bounds
+/// (mesh_proximity.hpp); for a primitive, one shape.
 struct FclModels {
   std::shared_ptr<Geom> distance;
   std::shared_ptr<Geom> collision;
@@ -124,8 +126,8 @@ Box3 local_box(const Geom& g) {
 }
 
 struct FclPart {
-  std::shared_ptr<const Geom> geometry;            ///< for distances (OBBRSS for a mesh)
-  std::shared_ptr<const Geom> collision_geometry;  ///< for yes/no collision (OBB for a mesh)
+  std::shared_ptr<const Geom> geometry;            ///< for nearest points (OBBRSS for a mesh)
+  std::shared_ptr<const Geom> collision_geometry;  ///< yes/no, clearance bounds (OBB for a mesh)
   Eigen::Isometry3d pose;                          ///< X_BP
   bool pose_is_identity;
   bool is_mesh;
@@ -651,6 +653,13 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
       const FclPart& obstacle = m.geometry->obstacles[i];
       if (box.distance_to(obstacle.box) >= best)
         return false;
+      if (part.is_mesh && obstacle.is_mesh) {
+        using Obb = fcl::BVHModel<fcl::OBBd>;
+        best = mesh_distance_bound(static_cast<const Obb&>(*part.collision_geometry), X_WP,
+                                   static_cast<const Obb&>(*obstacle.collision_geometry),
+                                   obstacle.pose, best, kClearanceRelativeError);
+        return best <= 0.0;
+      }
       // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far
       // apart; what it returns, d, bounds the true distance from below as d / (1 + e). If it
       // found nothing closer, d is that start, and best stays: best * (1 + e) / (1 + e) may round

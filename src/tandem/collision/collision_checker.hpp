@@ -84,9 +84,10 @@ class CollisionChecker {
   /// c satisfies c <= min(cap, true distance), and c < cap only when something is closer than cap.
   /// It is <= 0 when the object collides (FCL's mesh distance is 0 for intersecting triangles,
   /// negative for penetrating primitives); an FCL exception gives 0. Cheaper than
-  /// nearest_obstacle(): FCL prunes with a relative error (kClearanceRelativeError) and every BV
-  /// pair farther than the cap, and boxes prune whole pairs of parts. The continuous motion
-  /// validation certifies motions with it.
+  /// nearest_obstacle(): the search prunes with a relative error (kClearanceRelativeError) and
+  /// every pair of bounding volumes farther than the cap, and boxes prune whole pairs of parts;
+  /// two meshes are searched through their OBB trees (mesh_proximity.hpp), other pairs by FCL.
+  /// The continuous motion validation certifies motions with it.
   double clearance_bound(const Config& q, double cap) { return clearance_bound(q, cap, cap); }
   /// The same, with FCL asked only up to fcl_cap (<= cap): the distance grid, when built, answers
   /// up to cap in a few memory reads; FCL's work grows with its cap.
