@@ -1,6 +1,7 @@
 // tandem's yes/no collision query held against FCL as OMPL.app and FCL's own examples use it: one
 // BVHModel<OBBRSS> per mesh, FCL primitives, fcl::collide with a default request. tandem answers
-// with OBB trees (faster for yes/no) after the distance-grid pre-filter; neither may ever change an
+// with OBB trees (faster for yes/no), walked by its own code between two meshes
+// (mesh_proximity.hpp), after the distance-grid pre-filter; none of these may ever change an
 // answer. On uniform samples and on configurations a hair either side of contact, of every shipped
 // problem.
 

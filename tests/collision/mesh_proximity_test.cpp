@@ -1,5 +1,6 @@
-// tandem's search of FCL's OBB trees for a capped distance bound, held against FCL's exact distance
-// on OBBRSS trees of the same triangles (as fcl::distance with a default request computes it).
+// tandem's searches of FCL's OBB trees, held against FCL: the yes/no answers against fcl::collide
+// on the same trees, the capped distance bounds against FCL's exact distance on OBBRSS trees of
+// the same triangles (as fcl::distance with a default request computes it).
 
 #include "tandem/collision/mesh_proximity.hpp"
 
@@ -58,7 +59,7 @@ Eigen::Isometry3d random_pose(Rng& rng, double reach) {
   return q.pose();
 }
 
-TEST(MeshProximity, BoundsFclsExactDistanceFromBelowWithinTheRelativeError) {
+TEST(MeshProximity, AnswersAsFclAndBoundsItsExactDistanceWithinTheRelativeError) {
   Rng rng(5);
   const Soup a = random_soup(rng, 300);
   const Soup b = random_soup(rng, 200);
@@ -77,6 +78,11 @@ TEST(MeshProximity, BoundsFclsExactDistanceFromBelowWithinTheRelativeError) {
     fcl::DistanceResultd result;
     fcl::distance(rss_a.get(), X_WA, rss_b.get(), X_WB, request, result);
     const double exact = collide ? 0.0 : result.min_distance;
+    fcl::CollisionResultd obb_hit;
+    ASSERT_EQ(meshes_intersect(*obb_a, X_WA, *obb_b, X_WB),
+              fcl::collide(obb_a.get(), X_WA, obb_b.get(), X_WB, hit_request, obb_hit) > 0)
+        << "pose " << i;
+    ASSERT_EQ(meshes_intersect(*obb_a, X_WA, *obb_b, X_WB), collide) << "pose " << i;
     const double cap = rng.uniform(0.01, 0.6);
     for (const double e : {0.0, 0.25}) {
       const double bound = mesh_distance_bound(*obb_a, X_WA, *obb_b, X_WB, cap, e);
@@ -103,8 +109,10 @@ TEST(MeshProximity, IsTheCapExactlyWhenNothingIsNearer) {
   const Eigen::Isometry3d far = Eigen::Translation3d(5.0, 0.0, 0.0) * Eigen::Isometry3d::Identity();
   for (const double cap : {1e-6, 0.1, 0.3, 1.0, 3.0})
     EXPECT_EQ(mesh_distance_bound(*m, Eigen::Isometry3d::Identity(), *m, far, cap, 0.25), cap);
+  EXPECT_FALSE(meshes_intersect(*m, Eigen::Isometry3d::Identity(), *m, far));
   // The same soup on itself intersects.
   EXPECT_EQ(mesh_distance_bound(*m, far, *m, far, 1.0, 0.25), 0.0);
+  EXPECT_TRUE(meshes_intersect(*m, far, *m, far));
 }
 
 }  // namespace

@@ -136,6 +136,11 @@ struct FclPart {
   std::size_t obstacle;  ///< owning obstacle (obstacle parts only)
 };
 
+/// The OBB tree of a mesh part.
+const fcl::BVHModel<fcl::OBBd>& obb_tree(const FclPart& mesh_part) {
+  return static_cast<const fcl::BVHModel<fcl::OBBd>&>(*mesh_part.collision_geometry);
+}
+
 struct SharedGeometry {
   std::vector<FclPart> object;
   std::vector<FclPart> obstacles;
@@ -567,6 +572,8 @@ bool CollisionChecker::is_collision_free(const Config& q) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
     const bool hit = m.for_overlapping(part.box.transformed(X_WP), [&](std::size_t i) {
       const FclPart& obstacle = m.geometry->obstacles[i];
+      if (part.is_mesh && obstacle.is_mesh)
+        return meshes_intersect(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose);
       fcl::CollisionResultd result;
       try {
         return fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
@@ -654,10 +661,8 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
       if (box.distance_to(obstacle.box) >= best)
         return false;
       if (part.is_mesh && obstacle.is_mesh) {
-        using Obb = fcl::BVHModel<fcl::OBBd>;
-        best = mesh_distance_bound(static_cast<const Obb&>(*part.collision_geometry), X_WP,
-                                   static_cast<const Obb&>(*obstacle.collision_geometry),
-                                   obstacle.pose, best, kClearanceRelativeError);
+        best = mesh_distance_bound(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose, best,
+                                   kClearanceRelativeError);
         return best <= 0.0;
       }
       // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far

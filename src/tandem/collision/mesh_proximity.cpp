@@ -1,57 +1,97 @@
 #include "tandem/collision/mesh_proximity.hpp"
 
+#include <fcl/math/geometry.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
+#include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace tandem {
 namespace {
 
-/// Head-room for the rounding of the boxes' and the triangles' arithmetic: the search starts a
-/// hair beyond the cap, so that a pair at the cap, rounded up, is still searched.
+using ObbTree = fcl::BVHModel<fcl::OBBd>;
+
+/// Head-room for the rounding of the boxes' and the triangles' arithmetic: the distance search
+/// starts a hair beyond the cap, so that a pair at the cap, rounded up, is still searched.
 constexpr double kRoundingShare = 1e-9;
 
-/// One query: mesh b's frame in mesh a's (R, T), and the best distance found so far.
-class Search {
+/// Two trees and mesh b's frame in mesh a's (R, T, as fcl::collide computes them), walked as FCL
+/// walks them: of a pair of boxes, the larger is opened, or the one that is not a leaf.
+class TreePair {
  public:
-  Search(const fcl::BVHModel<fcl::OBBd>& a, const fcl::BVHModel<fcl::OBBd>& b,
-         const Eigen::Isometry3d& X_AB, double start, double relative_error)
-      : a_(a),
-        b_(b),
-        R_(X_AB.linear()),
-        T_(X_AB.translation()),
-        shrink_(1.0 / (1.0 + relative_error)),
-        best_(start) {}
+  TreePair(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
+           const Eigen::Isometry3d& X_WB)
+      : a_(a), b_(b) {
+    fcl::relativeTransform(X_WA.linear(), X_WA.translation(), X_WB.linear(), X_WB.translation(), R_,
+                           T_);
+  }
 
-  /// Lowers best to the distance of each pair of triangles under boxes i (of a) and j (of b)
-  /// nearer than it, skipping the pairs of boxes farther apart than best / (1 + e); stops at an
-  /// intersection. As FCL: the larger box is opened, or the one that is not a leaf.
-  void search(int i, int j) {
+  /// Whether a pair of triangles under boxes i (of a) and j (of b) intersects: FCL's test of a
+  /// pair of triangles, so the answer is fcl::collide's. The children nearer the other box (by
+  /// their centres) first: a colliding query stops sooner.
+  bool intersect(int i, int j) const {
     const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
-    if (best_ <= 0.0 || !boxes_within(na.bv, nb.bv, best_ * shrink_))
+    if (!boxes_within(na.bv, nb.bv, 0.0))
+      return false;
+    if (na.isLeaf() && nb.isLeaf())
+      return triangles_intersect(na.primitiveId(), nb.primitiveId());
+    if (open_a(na, nb)) {
+      const auto [first, second] = nearer_first(a_, na, R_ * nb.bv.To + T_);
+      return intersect(first, j) || intersect(second, j);
+    }
+    const auto [first, second] = nearer_first(b_, nb, R_.transpose() * (na.bv.To - T_));
+    return intersect(i, first) || intersect(i, second);
+  }
+
+  /// Lowers best to the distance of each pair of triangles under boxes i and j nearer than it,
+  /// skipping the pairs of boxes farther apart than best * shrink; stops at an intersection.
+  void lower(int i, int j, double shrink, double& best) const {
+    const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
+    const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
+    if (best <= 0.0 || !boxes_within(na.bv, nb.bv, best * shrink))
       return;
-    const bool leaf_a = na.isLeaf();
-    const bool leaf_b = nb.isLeaf();
-    if (leaf_a && leaf_b) {
-      best_ = std::min(best_, triangle_distance(na.primitiveId(), nb.primitiveId()));
-    } else if (leaf_b || (!leaf_a && na.bv.size() > nb.bv.size())) {
-      search(na.leftChild(), j);
-      search(na.rightChild(), j);
+    if (na.isLeaf() && nb.isLeaf()) {
+      best = std::min(best, triangle_distance(na.primitiveId(), nb.primitiveId()));
+    } else if (open_a(na, nb)) {
+      lower(na.leftChild(), j, shrink, best);
+      lower(na.rightChild(), j, shrink, best);
     } else {
-      search(i, nb.leftChild());
-      search(i, nb.rightChild());
+      lower(i, nb.leftChild(), shrink, best);
+      lower(i, nb.rightChild(), shrink, best);
     }
   }
 
-  double best() const { return best_; }
-
  private:
-  /// fcl::overlap(R, T, ba, bb) with ba's half extents grown by d.
+  static bool open_a(const fcl::BVNode<fcl::OBBd>& na, const fcl::BVNode<fcl::OBBd>& nb) {
+    return nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size());
+  }
+
+  /// The children of node n of tree t, the one whose centre is nearer c (in t's frame) first.
+  static std::pair<int, int> nearer_first(const ObbTree& t, const fcl::BVNode<fcl::OBBd>& n,
+                                          const Eigen::Vector3d& c) {
+    const int left = n.leftChild();
+    const int right = n.rightChild();
+    const bool swap =
+        (t.getBV(right).bv.To - c).squaredNorm() < (t.getBV(left).bv.To - c).squaredNorm();
+    return swap ? std::pair{right, left} : std::pair{left, right};
+  }
+
+  /// fcl::overlap(R, T, ba, bb) with ba's half extents grown by d: false only when no point of
+  /// bb is within d of ba.
   bool boxes_within(const fcl::OBBd& ba, const fcl::OBBd& bb, double d) const {
     const Eigen::Matrix3d B = ba.axis.transpose() * (R_ * bb.axis);
     const Eigen::Vector3d T = ba.axis.transpose() * (R_ * bb.To + T_ - ba.To);
     return !fcl::obbDisjoint(B, T, Eigen::Vector3d(ba.extent.array() + d), bb.extent);
+  }
+
+  bool triangles_intersect(int ta, int tb) const {
+    const fcl::Triangle& s = a_.tri_indices[ta];
+    const fcl::Triangle& t = b_.tri_indices[tb];
+    return fcl::detail::Intersect<double>::intersect_Triangle(
+        a_.vertices[s[0]], a_.vertices[s[1]], a_.vertices[s[2]], b_.vertices[t[0]],
+        b_.vertices[t[1]], b_.vertices[t[2]], R_, T_);
   }
 
   double triangle_distance(int ta, int tb) const {
@@ -64,23 +104,25 @@ class Search {
     return fcl::detail::TriangleDistance<double>::triDistance(P, Q, R_, T_, p, q);
   }
 
-  const fcl::BVHModel<fcl::OBBd>& a_;
-  const fcl::BVHModel<fcl::OBBd>& b_;
-  const Eigen::Matrix3d R_;
-  const Eigen::Vector3d T_;
-  const double shrink_;
-  double best_;
+  const ObbTree& a_;
+  const ObbTree& b_;
+  Eigen::Matrix3d R_;
+  Eigen::Vector3d T_;
 };
 
 }  // namespace
 
-double mesh_distance_bound(const fcl::BVHModel<fcl::OBBd>& a, const Eigen::Isometry3d& X_WA,
-                           const fcl::BVHModel<fcl::OBBd>& b, const Eigen::Isometry3d& X_WB,
-                           double cap, double relative_error) {
+bool meshes_intersect(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
+                      const Eigen::Isometry3d& X_WB) {
+  return TreePair(a, X_WA, b, X_WB).intersect(0, 0);
+}
+
+double mesh_distance_bound(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
+                           const Eigen::Isometry3d& X_WB, double cap, double relative_error) {
   const double grow = 1.0 + relative_error;
-  Search s(a, b, X_WA.inverse() * X_WB, cap * grow * (1.0 + kRoundingShare), relative_error);
-  s.search(0, 0);
-  return std::min(cap, s.best() / grow);
+  double best = cap * grow * (1.0 + kRoundingShare);
+  TreePair(a, X_WA, b, X_WB).lower(0, 0, 1.0 / grow, best);
+  return std::min(cap, best / grow);
 }
 
 }  // namespace tandem

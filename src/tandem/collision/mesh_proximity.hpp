@@ -1,16 +1,22 @@
 #pragma once
-// A lower bound on the distance between two meshes, capped: the search FCL's fcl::distance makes
-// over a pair of bounding-volume trees, made over the oriented-box (OBB) trees FCL builds for
-// yes/no collision, with each box grown by the distance searched for.
+// Yes/no collision and capped distance bounds between two meshes, by the searches FCL's
+// fcl::collide and fcl::distance make over a pair of bounding-volume trees, made here over the
+// oriented-box (OBB) trees FCL builds.
 //
-// A box grown by d along each of its axes holds every point within d of the box, so a pair of
-// boxes that the separating-axis test finds apart once one is grown by d holds no pair of points
-// within d. The search opens every pair of boxes that may hold triangles nearer than the best
-// distance found so far (at first the cap) and lowers it with the exact distance of each pair of
-// triangles (FCL's). Beside fcl::distance on OBBRSS trees, which computes a distance between
-// rectangle-swept spheres for every pair of boxes it meets, a separating-axis test is a few dozen
-// operations: on Apartment's near-contact states a query capped at a quarter resolution step
-// took 47 us against FCL's 103 (bench/check_costs.cpp).
+// Collision: the same boxes tested the same way and FCL's own test of a pair of triangles, so the
+// answer is fcl::collide's; of the two children of an opened box, the one nearer the other box
+// goes first, and a colliding query meets an intersecting pair sooner. Without FCL's dispatch and
+// result objects, and with that order, a query on Apartment's (mostly colliding) uniform states
+// took 19 us against fcl::collide's 34 (bench/check_costs.cpp, "collide").
+//
+// Distance: a box grown by d along each of its axes holds every point within d of the box, so a
+// pair of boxes that the separating-axis test finds apart once one is grown by d holds no pair of
+// points within d. The search opens every pair of boxes that may hold triangles nearer than the
+// best distance found so far (at first the cap) and lowers it with the exact distance of each
+// pair of triangles (FCL's). Beside fcl::distance on OBBRSS trees, which computes a distance
+// between rectangle-swept spheres for every pair of boxes it meets, a separating-axis test is a
+// few dozen operations: on Apartment's near-contact states a clearance query capped at one
+// resolution step took 127 us against 224 ("clearance").
 //
 // Threading: a pure function of immutable models; safe to call from any thread.
 
@@ -20,6 +26,10 @@
 #include <Eigen/Geometry>
 
 namespace tandem {
+
+/// Whether mesh a posed at X_WA and mesh b posed at X_WB intersect, as fcl::collide answers.
+bool meshes_intersect(const fcl::BVHModel<fcl::OBBd>& a, const Eigen::Isometry3d& X_WA,
+                      const fcl::BVHModel<fcl::OBBd>& b, const Eigen::Isometry3d& X_WB);
 
 /// A lower bound on the distance between mesh a posed at X_WA and mesh b posed at X_WB, capped:
 /// min(cap, d / (1 + relative_error)), where d is the least distance between the pairs of
