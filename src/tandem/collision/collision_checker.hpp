@@ -58,7 +58,8 @@ enum class BroadPhase { automatic, linear, tree };
 
 class CollisionChecker {
  public:
-  /// Builds FCL models for every part (BVHModel<OBBRSS> for meshes, FCL primitives otherwise).
+  /// Builds FCL models for every part (BVHModel<OBBRSS> and BVHModel<OBB> for meshes, FCL
+  /// primitives otherwise).
   /// Throws InputError if a primitive has a non-positive or non-finite size.
   explicit CollisionChecker(const Scene& scene);
   ~CollisionChecker();
