@@ -126,7 +126,7 @@ Box3 local_box(const Geom& g) {
 }
 
 struct FclPart {
-  std::shared_ptr<const Geom> geometry;            ///< for nearest points (OBBRSS for a mesh)
+  std::shared_ptr<const Geom> geometry;            ///< FCL's distances (OBBRSS for a mesh)
   std::shared_ptr<const Geom> collision_geometry;  ///< yes/no, clearance bounds (OBB for a mesh)
   Eigen::Isometry3d pose;                          ///< X_BP
   bool pose_is_identity;
@@ -244,6 +244,24 @@ std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const B
       Prefilter{bounds, spacing, std::move(grid), std::move(object), std::move(blocks)});
 }
 
+/// Whether one part of the object (at X_WP) touches one part of an obstacle: tandem's walk of the
+/// OBB trees for two meshes (fcl::collide's answer), fcl::collide otherwise. An FCL exception
+/// counts as a collision.
+bool parts_collide(const FclPart& part, const Eigen::Isometry3d& X_WP, const FclPart& obstacle,
+                   const fcl::CollisionRequestd& request, CollisionCounters& counters) {
+  if (part.is_mesh && obstacle.is_mesh)
+    return meshes_intersect(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose);
+  try {
+    fcl::CollisionResultd result;
+    return fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
+                        obstacle.pose, request, result) > 0;
+  } catch (const std::exception&) {
+    // GJK/EPA can throw on degenerate input (fcl #395, #415): be conservative.
+    ++counters.fcl_errors;
+    return true;
+  }
+}
+
 /// The nearest points of one part of the object (at X_WP) and one part of an obstacle, or a
 /// collision (FCL's distance is not signed: touching parts have no direction). An FCL exception
 /// counts as a collision.
@@ -252,12 +270,9 @@ NearestObstacle nearest_pair(const FclPart& part, const Eigen::Isometry3d& X_WP,
                              const fcl::DistanceRequestd& distance, CollisionCounters& counters) {
   const NearestObstacle touching{true, 0.0, X_WP.translation(), X_WP.translation(),
                                  obstacle.obstacle};
+  if (parts_collide(part, X_WP, obstacle, collision, counters))
+    return touching;
   try {
-    fcl::CollisionResultd hit;
-    if (fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
-                     obstacle.pose, collision, hit) > 0) {
-      return touching;
-    }
     // NOTE: FCL 0.7 returns nearest points in the objects' local frames, not the world frame,
     // for a primitive passed before a mesh, and for a sphere against a mesh in either order
     // (checked for every pair of geometry kinds in collision_checker_test). So the mesh goes
@@ -571,18 +586,7 @@ bool CollisionChecker::is_collision_free(const Config& q) {
   for (const auto& part : m.geometry->object) {
     const Eigen::Isometry3d X_WP = m.world_pose(part, X_WO);
     const bool hit = m.for_overlapping(part.box.transformed(X_WP), [&](std::size_t i) {
-      const FclPart& obstacle = m.geometry->obstacles[i];
-      if (part.is_mesh && obstacle.is_mesh)
-        return meshes_intersect(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose);
-      fcl::CollisionResultd result;
-      try {
-        return fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
-                            obstacle.pose, m.collision_request, result) > 0;
-      } catch (const std::exception&) {
-        // GJK/EPA can throw on degenerate input (fcl #395, #415): be conservative.
-        ++m.counters.fcl_errors;
-        return true;
-      }
+      return parts_collide(part, X_WP, m.geometry->obstacles[i], m.collision_request, m.counters);
     });
     if (hit)
       return false;
