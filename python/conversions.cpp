@@ -8,6 +8,7 @@
 
 #include "tandem/core/error.hpp"
 #include "tandem/io/path_file.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem::python {
 
@@ -52,11 +53,11 @@ Config config_of(const double* v, bool planar, const std::string& where) {
     return q;
   }
   q.t = {v[0], v[1], v[2]};
-  q.q = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
-  const double norm = q.q.norm();
-  if (!(norm > 1e-12))
+  // Any four finite numbers but zero: 1e200 as a component reads as the direction it gives.
+  const std::optional<Eigen::Quaterniond> unit = unit_quaternion(v[6], v[3], v[4], v[5]);
+  if (!unit)
     throw InputError(where, "has a zero quaternion");
-  q.q.coeffs() /= norm;
+  q.q = *unit;
   return q;
 }
 

@@ -120,6 +120,18 @@ def test_errors_are_input_errors_with_tandems_message(cluttered):
         tandem.plan(cluttered, planner="rrt", goal_bias=7)
     with pytest.raises(tandem.InputError, match="not finite"):
         tandem.Collision(cluttered).is_free([0, 0, float("nan"), 0, 0, 0, 1])
+    with pytest.raises(tandem.InputError, match="zero quaternion"):
+        tandem.Collision(cluttered).is_free([0, 0, 0, 0, 0, 1e-10, 0])
+
+
+def test_a_quaternion_of_huge_numbers_reads_as_its_direction(cluttered):
+    # Squaring 1e200 overflows; the direction (x = z) is still a rotation, and it is not the
+    # identity (it read as the zero quaternion, that is as no rotation at all).
+    collision = tandem.Collision(cluttered)
+    at = [-2.0, 0.0, 0.6]
+    turned = collision.nearest(at + [1, 0, 1, 0])
+    assert collision.nearest(at + [1e200, 0, 1e200, 0]) == turned
+    assert turned != collision.nearest(at + [0, 0, 0, 1])
     with pytest.raises(tandem.InputError, match="shape"):
         tandem.check_path(cluttered, np.zeros((2, 5)))
     with pytest.raises(tandem.InputError, match="unknown planner"):

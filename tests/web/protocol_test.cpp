@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "tandem/planning/tree.hpp"
@@ -32,6 +33,8 @@ TEST(Protocol, RefusesEveryMalformedOrHostileMessage) {
   EXPECT_THAT(refusal("{\"type\":\"pose\"}"), HasSubstr("needs q"));
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[1,2,3]}"), HasSubstr("7 numbers"));
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[0,0,0,0,0,0,0]}"), HasSubstr("zero"));
+  // At most kMinQuaternionNorm, as every other reader of a rotation refuses it.
+  EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[0,0,0,0,0,5e-10,5e-10]}"), HasSubstr("zero"));
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[1e308,0,0,0,0,0,1]}"), HasSubstr("q must be in"));
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[\"a\",0,0,0,0,0,1]}"), HasSubstr("number"));
   EXPECT_THAT(refusal("{\"type\":\"pose\",\"q\":[0,0,0,0,0,0,1],\"id\":-1}"),
@@ -59,6 +62,12 @@ TEST(Protocol, ParsesWhatTheViewerSends) {
   EXPECT_EQ(pose.kind, ClientMessage::Kind::pose);
   EXPECT_EQ(pose.q.t, Eigen::Vector3d(1, 2, 3));
   EXPECT_DOUBLE_EQ(pose.q.q.w(), 1.0) << "normalised";
+  // Above kMinQuaternionNorm, a direction however short (the threshold was 1e-6 here, 1e-9 in
+  // the files' readers).
+  const ClientMessage small =
+      parse_client_message("{\"type\":\"pose\",\"q\":[0,0,0,1e-8,0,0,1e-8]}", {});
+  EXPECT_NEAR(small.q.q.x(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(small.q.q.w(), std::sqrt(0.5), 1e-15);
   EXPECT_EQ(pose.id, 9u);
   InteractionSettings current;
   current.contact_samples = 4;

@@ -78,7 +78,8 @@ Path parse_path(const std::string& text, const SE3Space& space, const std::strin
     }
     Config q;
     q.t = {v[0], v[1], v[2]};
-    const auto unit = unit_quaternion(v[6], v[3], v[4], v[5], 1e-9, 1e-12);
+    const auto unit =
+        unit_quaternion(v[6], v[3], v[4], v[5], kMinQuaternionNorm, kUnitQuaternionSlack);
     if (!unit)
       throw InputError(where, "the quaternion is zero");
     q.q = *unit;

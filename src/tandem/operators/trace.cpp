@@ -80,7 +80,8 @@ Trace parse_trace(const std::string& text, const std::string& source) {
     TraceSample sample;
     sample.t = v[0];
     sample.q.t = {v[1], v[2], v[3]};
-    const auto unit = unit_quaternion(v[7], v[4], v[5], v[6], 1e-9, 1e-12);
+    const auto unit =
+        unit_quaternion(v[7], v[4], v[5], v[6], kMinQuaternionNorm, kUnitQuaternionSlack);
     if (!unit)
       throw InputError(where, "the quaternion is zero");
     sample.q.q = *unit;

@@ -52,7 +52,7 @@ Eigen::Quaterniond read_rotation(TomlTable& t, bool planar) {
   } else if (t.has("quaternion")) {
     const toml::node& n = t.require("quaternion");
     auto v = t.numbers(n, "quaternion", 4, 4);
-    const auto unit = unit_quaternion(v[3], v[0], v[1], v[2], 1e-9);
+    const auto unit = unit_quaternion(v[3], v[0], v[1], v[2]);
     if (!unit)
       t.fail(n, "quaternion", "must not be zero");
     q = *unit;

@@ -11,6 +11,14 @@
 
 namespace tandem {
 
+/// Four numbers whose norm is at most this are refused as a rotation by every reader (files,
+/// traces, the viewer's messages, the Python module): they are zero, or too near it for their
+/// direction to mean anything.
+inline constexpr double kMinQuaternionNorm = 1e-9;
+/// The readers of what tandem writes (traces, paths) keep four numbers whose norm is within this
+/// of 1 bit for bit: a unit quaternion written out and read back stays the same.
+inline constexpr double kUnitQuaternionSlack = 1e-12;
+
 /// `v` divided by its norm, or nullopt when a component is not finite or the norm is at most
 /// `min_norm`. When the norm is within `keep_within` of 1, `v` itself.
 template <typename Vector>
@@ -30,7 +38,7 @@ std::optional<Vector> unit_direction(const Vector& v, double min_norm = 0.0,
 
 /// The unit quaternion of w + xi + yj + zk (see unit_direction).
 inline std::optional<Eigen::Quaterniond> unit_quaternion(double w, double x, double y, double z,
-                                                         double min_norm,
+                                                         double min_norm = kMinQuaternionNorm,
                                                          double keep_within = 0.0) {
   const std::optional<Eigen::Vector4d> unit =
       unit_direction(Eigen::Vector4d(x, y, z, w), min_norm, keep_within);  // Eigen's order

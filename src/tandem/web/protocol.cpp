@@ -7,6 +7,7 @@
 
 #include "tandem/io/json_codec.hpp"
 #include "tandem/planning/planner_registry.hpp"
+#include "tandem/space/unit_quaternion.hpp"
 
 namespace tandem {
 namespace {
@@ -39,11 +40,10 @@ Config parse_pose(const json& j) {
     v[k] = number_in(j[k], "q", -1e9, 1e9);
   Config q;
   q.t = {v[0], v[1], v[2]};
-  q.q = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
-  const double norm = q.q.norm();
-  if (!(norm > 1e-6))
+  const std::optional<Eigen::Quaterniond> unit = unit_quaternion(v[6], v[3], v[4], v[5]);
+  if (!unit)
     throw ProtocolError("q's quaternion must not be zero");
-  q.q.coeffs() /= norm;
+  q.q = *unit;
   return q;
 }
 
