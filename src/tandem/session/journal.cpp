@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -329,6 +330,40 @@ Journal read_journal(const std::filesystem::path& file) {
   if (!have_header)
     throw InputError(file.string(), "empty: not a tandem session journal");
   return journal;
+}
+
+JournalHeader session_header(const Problem& problem, const std::string& problem_name,
+                             const TakeOutOptions& take_out, const RunSpec& spec,
+                             const std::string& operator_description) {
+  JournalHeader h;
+  h.problem = problem_name.empty() ? problem.source : problem_name;
+  h.take_out = take_out;
+  h.problem_digest = format_digest(problem_digest(problem));
+  h.mode = spec.mode;
+  h.settings = spec.settings;
+  h.operator_description = operator_description;
+  h.started = utc_now_iso8601();
+  return h;
+}
+
+JournalDigest trees_digest(const Planner& planner, std::uint64_t steps,
+                           const std::optional<std::string>& end_status) {
+  JournalDigest d;
+  d.steps = steps;
+  d.iterations = planner.stats().iterations;
+  d.nodes = planner.stats().nodes;
+  d.digest = format_digest(tree_digest(planner.trees()));
+  d.end_status = end_status;
+  return d;
+}
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
 }
 
 }  // namespace tandem

@@ -37,6 +37,7 @@
 
 #include "tandem/interaction/operator_feed.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/runs/run_spec.hpp"
 #include "tandem/scene/problem.hpp"
 #include "tandem/scene/take_out.hpp"
 
@@ -117,5 +118,18 @@ class JournalWriter {
 /// Throws InputError naming the file and the line for a missing or malformed header, a malformed
 /// record (except a torn last line), or records out of order.
 Journal read_journal(const std::filesystem::path& file);
+
+/// The header of a session's journal: the problem as the user named it (else its source) and its
+/// digest, the planner, the operator, and the time it starts.
+JournalHeader session_header(const Problem& problem, const std::string& problem_name,
+                             const TakeOutOptions& take_out, const RunSpec& spec,
+                             const std::string& operator_description);
+
+/// The digest record of the planner's trees after `steps` steps; `end_status` for the last one.
+JournalDigest trees_digest(const Planner& planner, std::uint64_t steps,
+                           const std::optional<std::string>& end_status);
+
+/// The current UTC time, ISO 8601 (for journal headers).
+std::string utc_now_iso8601();
 
 }  // namespace tandem

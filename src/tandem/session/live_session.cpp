@@ -1,7 +1,6 @@
 #include "tandem/session/live_session.hpp"
 
 #include <chrono>
-#include <ctime>
 #include <thread>
 
 #include "tandem/core/error.hpp"
@@ -26,19 +25,6 @@ std::shared_ptr<OperatorSwitch> live_operator(const Problem& problem, const RunS
                                           std::move(nav), std::move(why));
 }
 
-JournalHeader header_for(const Problem& problem, const RunSpec& spec, const LiveOptions& options,
-                         const OperatorSource& source) {
-  JournalHeader h;
-  h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
-  h.take_out = options.take_out;
-  h.problem_digest = format_digest(problem_digest(problem));
-  h.mode = spec.mode;
-  h.settings = spec.settings;
-  h.operator_description = source.describe();
-  h.started = utc_now_iso8601();
-  return h;
-}
-
 }  // namespace
 
 void require_live_planner(const RunSpec& spec) {
@@ -46,15 +32,6 @@ void require_live_planner(const RunSpec& spec) {
     throw InputError("--mode",
                      "a live session needs a planner that takes an operator, not " + spec.mode);
   }
-}
-
-std::string utc_now_iso8601() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
 }
 
 LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const LiveOptions& options)
@@ -69,7 +46,8 @@ LiveSession::LiveSession(const Problem& problem, const RunSpec& spec, const Live
   settings_now_ = spec_.settings.interaction;
   paused_ = options.start_paused;
   input_ = switch_->snapshot().input;
-  journal_.emplace(options.journal, header_for(problem, spec_, options, *switch_));
+  journal_.emplace(options.journal, session_header(problem, options.problem_name, options.take_out,
+                                                   spec_, switch_->describe()));
   journal_->event(0, "input " + std::string(to_string(input_)));
   interaction_.feed = &feed_;
   interaction_.parameters = &parameters_;
@@ -196,13 +174,7 @@ void LiveSession::measure_latency() {
 }
 
 void LiveSession::journal_digest(const std::optional<std::string>& end_status) {
-  JournalDigest d;
-  d.steps = steps_;
-  d.iterations = planner_->stats().iterations;
-  d.nodes = planner_->stats().nodes;
-  d.digest = format_digest(tree_digest(planner_->trees()));
-  d.end_status = end_status;
-  journal_->digest(d);
+  journal_->digest(trees_digest(*planner_, steps_, end_status));
 }
 
 // run() in phases: the operator starts, then each turn of the loop applies the commands, steps

@@ -195,7 +195,4 @@ class LiveSession {
 /// for every way a live session is started.
 void require_live_planner(const RunSpec& spec);
 
-/// The current UTC time, ISO 8601 (for journal headers).
-std::string utc_now_iso8601();
-
 }  // namespace tandem

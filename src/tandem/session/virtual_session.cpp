@@ -31,23 +31,6 @@ class VirtualSession::RecordingFeed final : public OperatorFeed {
   std::vector<FeedRecord> record_;
 };
 
-namespace {
-
-JournalHeader header_for(const Problem& problem, const RunSpec& spec,
-                         const VirtualSessionOptions& options, const std::string& operator_text) {
-  JournalHeader h;
-  h.problem = options.problem_name.empty() ? problem.source : options.problem_name;
-  h.take_out = options.take_out;
-  h.problem_digest = format_digest(problem_digest(problem));
-  h.mode = spec.mode;
-  h.settings = spec.settings;
-  h.operator_description = operator_text;
-  h.started = utc_now_iso8601();
-  return h;
-}
-
-}  // namespace
-
 VirtualSession::VirtualSession(const Problem& problem, const RunSpec& spec,
                                std::shared_ptr<const OperatorSource> source,
                                const VirtualSessionOptions& options)
@@ -76,7 +59,8 @@ VirtualSession::VirtualSession(const Problem& problem, const RunSpec& spec,
                          spec_.mode + " plans alone (its seed repeats it)");
   }
   if (!options_.journal.empty())
-    journal_.emplace(options_.journal, header_for(problem, spec_, options_, operator_text));
+    journal_.emplace(options_.journal, session_header(problem, options_.problem_name,
+                                                      options_.take_out, spec_, operator_text));
   // One thread: the planner and the operator share it (spec.settings.threads is not used).
   planner_ = make_planner(spec_.mode, validator_, problem.start, problem.goal, spec_.settings,
                           feed_ != nullptr ? &interaction_ : nullptr);
@@ -150,13 +134,7 @@ void VirtualSession::journal_feed() {
 }
 
 void VirtualSession::journal_digest(const std::optional<std::string>& end_status) {
-  JournalDigest d;
-  d.steps = steps_;
-  d.iterations = planner_->stats().iterations;
-  d.nodes = planner_->stats().nodes;
-  d.digest = format_digest(tree_digest(planner_->trees()));
-  d.end_status = end_status;
-  journal_->digest(d);
+  journal_->digest(trees_digest(*planner_, steps_, end_status));
 }
 
 }  // namespace tandem
