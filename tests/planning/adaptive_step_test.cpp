@@ -34,6 +34,43 @@ TEST(AdaptiveStep, AFloorOfOneKeepsTheRange) {
   EXPECT_EQ(steps.step(0), 8.0);
 }
 
+// The floor falls with the search's queries: halved at 100 000, again at 400 000, 1 600 000, ...,
+// down to 1/128 of the range; a node's step then shrinks below the old floor.
+TEST(AdaptiveStep, TheFloorFallsAsTheSearchGoesOnWithoutAPath) {
+  AdaptiveStep steps(8.0, 0.125);
+  const auto floor_step = [&steps] {
+    for (int i = 0; i < 20; ++i)
+      steps.blocked(0);
+    return steps.step(0);
+  };
+  steps.relax(99999);
+  EXPECT_EQ(steps.floor(), 0.125);
+  EXPECT_EQ(floor_step(), 1.0);
+  steps.relax(100000);
+  EXPECT_EQ(steps.floor(), 0.0625);
+  EXPECT_EQ(floor_step(), 0.5);
+  steps.relax(399999);
+  EXPECT_EQ(steps.floor(), 0.0625);
+  steps.relax(400000);
+  EXPECT_EQ(steps.floor(), 1.0 / 32.0);
+  steps.relax(100000000);  // 1 600 000 and 6 400 000 passed, and more
+  EXPECT_EQ(steps.floor(), 1.0 / 128.0);
+  EXPECT_EQ(floor_step(), 8.0 / 128.0);
+  steps.added(1, 0);
+  EXPECT_EQ(steps.step(1), 2.0 * 8.0 / 128.0) << "a new node still starts at twice its parent's";
+}
+
+TEST(AdaptiveStep, RelaxingNeitherRaisesALowerFloorNorMovesAFixedStep) {
+  AdaptiveStep low(8.0, 1.0 / 512.0);
+  low.relax(100000000);
+  EXPECT_EQ(low.floor(), 1.0 / 512.0);
+  AdaptiveStep fixed(8.0, 1.0);
+  fixed.relax(100000000);
+  EXPECT_FALSE(fixed.adapts());
+  fixed.blocked(0);
+  EXPECT_EQ(fixed.step(0), 8.0);
+}
+
 TEST(AdaptiveStep, OnlyTheClassicExtensionAdapts) {
   PlannerSettings s;
   s.extend = ExtendMode::classic;

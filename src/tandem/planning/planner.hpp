@@ -125,6 +125,8 @@ class Planner : public RoadmapView {
   void attach(Tree& tree);
   /// Counts an extension toward an iteration's target in the statistics.
   void count_extension(ExtendStatus status);
+  /// The collision queries this search has made so far.
+  std::uint64_t queries_so_far() const { return validator_.checks() - checks_at_start_; }
   /// What a variant counts of its own (a sampler's operator counters); called by update_counts().
   virtual SamplerStats sampler_stats() const { return {}; }
 

@@ -30,7 +30,8 @@ struct PlannerSettings {
   /// Longest motion added in one extension; 0 means 0.2 x the space's maximum extent (OMPL).
   double range = 0.0;
   /// The computer-alone planners' adaptive step (planning/adaptive_step.hpp): the smallest step,
-  /// as a share of range, a node's extensions shrink to; 1: a fixed step of range (OMPL's).
+  /// as a share of range, a node's extensions shrink to at first (it falls as a search goes on
+  /// without a path); 1: a fixed step of range (OMPL's).
   double adaptive_step = 0.125;
   /// RRT-Connect's share of iterations, after its first kPassageWarmup, that aim at passage
   /// islands (passage_islands.hpp); 0: none.

@@ -15,6 +15,7 @@ RRT::RRT(MotionValidator& validator, const Config& start, const Config& goal,
 }
 
 bool RRT::iterate() {
+  steps_.relax(queries_so_far());
   // 1. The goal, or the sampler's targets.
   const bool toward_goal = rng_.uniform01() < settings_.goal_bias;
   targets_.clear();

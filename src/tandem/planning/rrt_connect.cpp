@@ -50,7 +50,9 @@ bool RRTConnect::iterate() {
       return met;
   }
 
-  // 1. The targets.
+  // 1. The targets (each tree's step floor lowered as the search's work grows).
+  start_steps_.relax(queries_so_far());
+  goal_steps_.relax(queries_so_far());
   show_new_nodes();
   targets_.clear();
   if (credits_)
