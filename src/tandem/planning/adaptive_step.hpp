@@ -21,7 +21,8 @@
 // solved 0 of 3, 1/16 none of 4, 1/32 three, 1/128 two; but 1/32 from the start made alpha-1.5
 // 5.6 times and Apartment 3.1 times slower, hence a floor that falls with the search's work.
 //
-// Deterministic: a function of the extensions' outcomes. Threading: one per tree (one thread).
+// Deterministic: a function of the extensions' outcomes and of the search's query count.
+// Threading: one per tree (one thread).
 
 #include <algorithm>
 #include <cstdint>
