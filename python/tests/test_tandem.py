@@ -122,6 +122,11 @@ def test_errors_are_input_errors_with_tandems_message(cluttered):
         tandem.Collision(cluttered).is_free([0, 0, float("nan"), 0, 0, 0, 1])
     with pytest.raises(tandem.InputError, match="zero quaternion"):
         tandem.Collision(cluttered).is_free([0, 0, 0, 0, 0, 1e-10, 0])
+    with pytest.raises(tandem.InputError, match="shape"):
+        tandem.check_path(cluttered, np.zeros((2, 5)))
+    with pytest.raises(tandem.InputError, match="unknown planner"):
+        tandem.parameters("nope")
+    assert issubclass(tandem.InputError, ValueError)
 
 
 def test_a_quaternion_of_huge_numbers_reads_as_its_direction(cluttered):
@@ -132,8 +137,3 @@ def test_a_quaternion_of_huge_numbers_reads_as_its_direction(cluttered):
     turned = collision.nearest(at + [1, 0, 1, 0])
     assert collision.nearest(at + [1e200, 0, 1e200, 0]) == turned
     assert turned != collision.nearest(at + [0, 0, 0, 1])
-    with pytest.raises(tandem.InputError, match="shape"):
-        tandem.check_path(cluttered, np.zeros((2, 5)))
-    with pytest.raises(tandem.InputError, match="unknown planner"):
-        tandem.parameters("nope")
-    assert issubclass(tandem.InputError, ValueError)

@@ -62,13 +62,13 @@ TEST(Protocol, ParsesWhatTheViewerSends) {
   EXPECT_EQ(pose.kind, ClientMessage::Kind::pose);
   EXPECT_EQ(pose.q.t, Eigen::Vector3d(1, 2, 3));
   EXPECT_DOUBLE_EQ(pose.q.q.w(), 1.0) << "normalised";
+  EXPECT_EQ(pose.id, 9u);
   // Above kMinQuaternionNorm, a direction however short (the threshold was 1e-6 here, 1e-9 in
   // the files' readers).
   const ClientMessage small =
       parse_client_message("{\"type\":\"pose\",\"q\":[0,0,0,1e-8,0,0,1e-8]}", {});
   EXPECT_NEAR(small.q.q.x(), std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(small.q.q.w(), std::sqrt(0.5), 1e-15);
-  EXPECT_EQ(pose.id, 9u);
   InteractionSettings current;
   current.contact_samples = 4;
   const ClientMessage params = parse_client_message(

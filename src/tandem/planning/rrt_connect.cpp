@@ -51,8 +51,9 @@ bool RRTConnect::iterate() {
   }
 
   // 1. The targets (each tree's step floor lowered as the search's work grows).
-  start_steps_.relax(queries_so_far());
-  goal_steps_.relax(queries_so_far());
+  const std::uint64_t made = queries_so_far();
+  start_steps_.relax(made);
+  goal_steps_.relax(made);
   show_new_nodes();
   targets_.clear();
   if (credits_)
