@@ -27,39 +27,52 @@ class TreePair {
                            T_);
   }
 
-  /// Whether a pair of triangles under boxes i (of a) and j (of b) intersects: FCL's test of a
-  /// pair of triangles, so the answer is fcl::collide's. The children nearer the other box (by
-  /// their centres) first: a colliding query stops sooner.
-  bool intersect(int i, int j) const {
+  /// Box j of b in a's frame: its axes and centre. A walk that opens a's boxes against box j
+  /// places it once.
+  struct Placed {
+    Eigen::Matrix3d axis;
+    Eigen::Vector3d center;
+  };
+
+  Placed place(int j) const {
+    const fcl::OBBd& bb = b_.getBV(j).bv;
+    return {R_ * bb.axis, R_ * bb.To + T_};
+  }
+
+  /// Whether a pair of triangles under boxes i (of a) and j (of b, placed as pb) intersects:
+  /// FCL's test of a pair of triangles, so the answer is fcl::collide's. The children nearer the
+  /// other box (by their centres) first: a colliding query stops sooner.
+  bool intersect(int i, int j, const Placed& pb) const {
     const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
-    if (!boxes_within(na.bv, nb.bv, 0.0))
+    if (!boxes_within(na.bv, pb, nb.bv.extent, 0.0))
       return false;
     if (na.isLeaf() && nb.isLeaf())
       return triangles_intersect(na.primitiveId(), nb.primitiveId());
     if (open_a(na, nb)) {
-      const auto [first, second] = nearer_first(a_, na, R_ * nb.bv.To + T_);
-      return intersect(first, j) || intersect(second, j);
+      const auto [first, second] = nearer_first(a_, na, pb.center);
+      return intersect(first, j, pb) || intersect(second, j, pb);
     }
     const auto [first, second] = nearer_first(b_, nb, R_.transpose() * (na.bv.To - T_));
-    return intersect(i, first) || intersect(i, second);
+    return intersect(i, first, place(first)) || intersect(i, second, place(second));
   }
 
-  /// Lowers best to the distance of each pair of triangles under boxes i and j nearer than it,
-  /// skipping the pairs of boxes farther apart than best * shrink; stops at an intersection.
-  void lower(int i, int j, double shrink, double& best) const {
+  /// Lowers best to the distance of each pair of triangles under boxes i and j (placed as pb)
+  /// nearer than it, skipping the pairs of boxes farther apart than best * shrink; stops at an
+  /// intersection.
+  void lower(int i, int j, const Placed& pb, double shrink, double& best) const {
     const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
-    if (best <= 0.0 || !boxes_within(na.bv, nb.bv, best * shrink))
+    if (best <= 0.0 || !boxes_within(na.bv, pb, nb.bv.extent, best * shrink))
       return;
     if (na.isLeaf() && nb.isLeaf()) {
       best = std::min(best, triangle_distance(na.primitiveId(), nb.primitiveId()));
     } else if (open_a(na, nb)) {
-      lower(na.leftChild(), j, shrink, best);
-      lower(na.rightChild(), j, shrink, best);
+      lower(na.leftChild(), j, pb, shrink, best);
+      lower(na.rightChild(), j, pb, shrink, best);
     } else {
-      lower(i, nb.leftChild(), shrink, best);
-      lower(i, nb.rightChild(), shrink, best);
+      lower(i, nb.leftChild(), place(nb.leftChild()), shrink, best);
+      lower(i, nb.rightChild(), place(nb.rightChild()), shrink, best);
     }
   }
 
@@ -78,12 +91,13 @@ class TreePair {
     return swap ? std::pair{right, left} : std::pair{left, right};
   }
 
-  /// fcl::overlap(R, T, ba, bb) with ba's half extents grown by d: false only when no point of
-  /// bb is within d of ba.
-  bool boxes_within(const fcl::OBBd& ba, const fcl::OBBd& bb, double d) const {
-    const Eigen::Matrix3d B = ba.axis.transpose() * (R_ * bb.axis);
-    const Eigen::Vector3d T = ba.axis.transpose() * (R_ * bb.To + T_ - ba.To);
-    return !fcl::obbDisjoint(B, T, Eigen::Vector3d(ba.extent.array() + d), bb.extent);
+  /// fcl::overlap(R, T, ba, bb) with ba's half extents grown by d, for a box bb placed as pb
+  /// with half extents extent_b: false only when no point of bb is within d of ba.
+  static bool boxes_within(const fcl::OBBd& ba, const Placed& pb, const Eigen::Vector3d& extent_b,
+                           double d) {
+    const Eigen::Matrix3d B = ba.axis.transpose() * pb.axis;
+    const Eigen::Vector3d T = ba.axis.transpose() * (pb.center - ba.To);
+    return !fcl::obbDisjoint(B, T, Eigen::Vector3d(ba.extent.array() + d), extent_b);
   }
 
   bool triangles_intersect(int ta, int tb) const {
@@ -114,14 +128,16 @@ class TreePair {
 
 bool meshes_intersect(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
                       const Eigen::Isometry3d& X_WB) {
-  return TreePair(a, X_WA, b, X_WB).intersect(0, 0);
+  const TreePair pair(a, X_WA, b, X_WB);
+  return pair.intersect(0, 0, pair.place(0));
 }
 
 double mesh_distance_bound(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
                            const Eigen::Isometry3d& X_WB, double cap, double relative_error) {
   const double grow = 1.0 + relative_error;
   double best = cap * grow * (1.0 + kRoundingShare);
-  TreePair(a, X_WA, b, X_WB).lower(0, 0, 1.0 / grow, best);
+  const TreePair pair(a, X_WA, b, X_WB);
+  pair.lower(0, 0, pair.place(0), 1.0 / grow, best);
   return std::min(cap, best / grow);
 }
 
