@@ -16,6 +16,33 @@ using ObbTree = fcl::BVHModel<fcl::OBBd>;
 /// starts a hair beyond the cap, so that a pair at the cap, rounded up, is still searched.
 constexpr double kRoundingShare = 1e-9;
 
+/// fcl::BVNodeBase's isLeaf(), primitiveId(), leftChild() and rightChild(), which libfcl
+/// compiles out of line: read here from first_child as FCL defines them, inline in the walk.
+bool is_leaf(const fcl::BVNodeBase& n) {
+  return n.first_child < 0;
+}
+int primitive_of(const fcl::BVNodeBase& n) {
+  return -(n.first_child + 1);
+}
+int left_of(const fcl::BVNodeBase& n) {
+  return n.first_child;
+}
+int right_of(const fcl::BVNodeBase& n) {
+  return n.first_child + 1;
+}
+
+/// A·B, or Aᵀ·B, of 3×3 matrices by dot products: the walk's hottest arithmetic after the box
+/// test, and Eigen's product of two matrices is a call at -O2.
+template <bool kTransposeA>
+Eigen::Matrix3d product(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  Eigen::Matrix3d C;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c)
+      C(r, c) = kTransposeA ? A.col(r).dot(B.col(c)) : A.row(r).dot(B.col(c));
+  }
+  return C;
+}
+
 /// Two trees and mesh b's frame in mesh a's (R, T, as fcl::collide computes them), walked as FCL
 /// walks them: of a pair of boxes, the larger is opened, or the one that is not a leaf.
 class TreePair {
@@ -36,7 +63,7 @@ class TreePair {
 
   Placed place(int j) const {
     const fcl::OBBd& bb = b_.getBV(j).bv;
-    return {R_ * bb.axis, R_ * bb.To + T_};
+    return {product<false>(R_, bb.axis), R_ * bb.To + T_};
   }
 
   /// Whether a pair of triangles under boxes i (of a) and j (of b, placed as pb) intersects:
@@ -47,8 +74,8 @@ class TreePair {
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
     if (!boxes_within(na.bv, pb, nb.bv.extent, 0.0))
       return false;
-    if (na.isLeaf() && nb.isLeaf())
-      return triangles_intersect(na.primitiveId(), nb.primitiveId());
+    if (is_leaf(na) && is_leaf(nb))
+      return triangles_intersect(primitive_of(na), primitive_of(nb));
     if (open_a(na, nb)) {
       const auto [first, second] = nearer_first(a_, na, pb.center);
       return intersect(first, j, pb) || intersect(second, j, pb);
@@ -65,27 +92,27 @@ class TreePair {
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
     if (best <= 0.0 || !boxes_within(na.bv, pb, nb.bv.extent, best * shrink))
       return;
-    if (na.isLeaf() && nb.isLeaf()) {
-      best = std::min(best, triangle_distance(na.primitiveId(), nb.primitiveId()));
+    if (is_leaf(na) && is_leaf(nb)) {
+      best = std::min(best, triangle_distance(primitive_of(na), primitive_of(nb)));
     } else if (open_a(na, nb)) {
-      lower(na.leftChild(), j, pb, shrink, best);
-      lower(na.rightChild(), j, pb, shrink, best);
+      lower(left_of(na), j, pb, shrink, best);
+      lower(right_of(na), j, pb, shrink, best);
     } else {
-      lower(i, nb.leftChild(), place(nb.leftChild()), shrink, best);
-      lower(i, nb.rightChild(), place(nb.rightChild()), shrink, best);
+      lower(i, left_of(nb), place(left_of(nb)), shrink, best);
+      lower(i, right_of(nb), place(right_of(nb)), shrink, best);
     }
   }
 
  private:
   static bool open_a(const fcl::BVNode<fcl::OBBd>& na, const fcl::BVNode<fcl::OBBd>& nb) {
-    return nb.isLeaf() || (!na.isLeaf() && na.bv.size() > nb.bv.size());
+    return is_leaf(nb) || (!is_leaf(na) && na.bv.extent.squaredNorm() > nb.bv.extent.squaredNorm());
   }
 
   /// The children of node n of tree t, the one whose centre is nearer c (in t's frame) first.
   static std::pair<int, int> nearer_first(const ObbTree& t, const fcl::BVNode<fcl::OBBd>& n,
                                           const Eigen::Vector3d& c) {
-    const int left = n.leftChild();
-    const int right = n.rightChild();
+    const int left = left_of(n);
+    const int right = right_of(n);
     const bool swap =
         (t.getBV(right).bv.To - c).squaredNorm() < (t.getBV(left).bv.To - c).squaredNorm();
     return swap ? std::pair{right, left} : std::pair{left, right};
@@ -95,8 +122,9 @@ class TreePair {
   /// with half extents extent_b: false only when no point of bb is within d of ba.
   static bool boxes_within(const fcl::OBBd& ba, const Placed& pb, const Eigen::Vector3d& extent_b,
                            double d) {
-    const Eigen::Matrix3d B = ba.axis.transpose() * pb.axis;
-    const Eigen::Vector3d T = ba.axis.transpose() * (pb.center - ba.To);
+    const Eigen::Matrix3d B = product<true>(ba.axis, pb.axis);
+    const Eigen::Vector3d D = pb.center - ba.To;
+    const Eigen::Vector3d T(ba.axis.col(0).dot(D), ba.axis.col(1).dot(D), ba.axis.col(2).dot(D));
     return !fcl::obbDisjoint(B, T, Eigen::Vector3d(ba.extent.array() + d), extent_b);
   }
 
