@@ -453,10 +453,10 @@ test('changing α in the viewer changes the operator\'s share of the iterations 
     '--operator', `trace:${writeSwingTrace(dir)}`]));
   try {
     const page = await openViewer(browser, run);
-    // The operator's region is fresh at first, and every node its iterations add fills it: how much
-    // a node costs there drifts as the run goes on, at a pace set by the machine's load. So the
-    // tree first covers the region, and the windows go α 0.95, 0.05, 0.05, 0.95 so that a steady drift
-    // weighs on both settings alike.
+    // The operator's region is fresh at first, and every node its iterations add fills it: how
+    // many nodes an operator iteration adds there drifts as the run goes on, at a pace set by the
+    // machine's load. So the tree first covers the region, and the windows go α 0.95, 0.05, 0.05,
+    // 0.95, so that a steady drift weighs on both settings alike.
     await sleep(3000);
     await setAlpha(page, 0.95);
     const first = await operatorCounts(page, 2000);
