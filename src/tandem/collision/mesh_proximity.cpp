@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "tandem/collision/box_separation.hpp"
+
 namespace tandem {
 namespace {
 
@@ -122,10 +124,8 @@ class TreePair {
   /// with half extents extent_b: false only when no point of bb is within d of ba.
   static bool boxes_within(const fcl::OBBd& ba, const Placed& pb, const Eigen::Vector3d& extent_b,
                            double d) {
-    const Eigen::Matrix3d B = product<true>(ba.axis, pb.axis);
-    const Eigen::Vector3d D = pb.center - ba.To;
-    const Eigen::Vector3d T(ba.axis.col(0).dot(D), ba.axis.col(1).dot(D), ba.axis.col(2).dot(D));
-    return !fcl::obbDisjoint(B, T, Eigen::Vector3d(ba.extent.array() + d), extent_b);
+    return !boxes_apart(ba.axis, pb.center - ba.To, Eigen::Vector3d(ba.extent.array() + d), pb.axis,
+                        extent_b);
   }
 
   bool triangles_intersect(int ta, int tb) const {
