@@ -33,14 +33,13 @@ int right_of(const fcl::BVNodeBase& n) {
   return n.first_child + 1;
 }
 
-/// A·B, or Aᵀ·B, of 3×3 matrices by dot products: the walk's hottest arithmetic after the box
-/// test, and Eigen's product of two matrices is a call at -O2.
-template <bool kTransposeA>
+/// A·B of 3×3 matrices by dot products: a box's placement is the walk's hottest arithmetic after
+/// the box test, and Eigen's product of two matrices is a call at -O2.
 Eigen::Matrix3d product(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
   Eigen::Matrix3d C;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c)
-      C(r, c) = kTransposeA ? A.col(r).dot(B.col(c)) : A.row(r).dot(B.col(c));
+      C(r, c) = A.row(r).dot(B.col(c));
   }
   return C;
 }
@@ -65,7 +64,7 @@ class TreePair {
 
   Placed place(int j) const {
     const fcl::OBBd& bb = b_.getBV(j).bv;
-    return {product<false>(R_, bb.axis), R_ * bb.To + T_};
+    return {product(R_, bb.axis), R_ * bb.To + T_};
   }
 
   /// Whether a pair of triangles under boxes i (of a) and j (of b, placed as pb) intersects:
