@@ -1,5 +1,6 @@
 // tandem's separating-axis test of two boxes held against FCL's own, fcl::obbDisjoint, on random
-// pairs and on pairs at the edge of touching along every one of the fifteen axes.
+// pairs and on pairs at the edge of touching, where a face axis parts some and the product of two
+// axes others.
 
 #include "tandem/collision/box_separation.hpp"
 
