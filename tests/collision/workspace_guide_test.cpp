@@ -6,10 +6,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <random>
+#include <utility>
 #include <vector>
 
 namespace tandem {
 namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// A wall across the whole grid at z = 0 (0.2 thick), with a square hole of half width `half`
 /// centred at (x, 0) for each x in `holes`.
@@ -92,6 +100,108 @@ TEST(WorkspaceGuide, TheRouteStaysInTheBounds) {
   EXPECT_GT(highest, 1.0) << "the route passes over the wall";
   const Bounds below{{-3, -3, -3}, {3, 3, 0.8}};
   EXPECT_TRUE(find_guide(grid, GuideBlocks(grid, below), {-2, 0, 0}, {2, 0, 0}, 1.0).empty());
+}
+
+/// Step 2 as written: the widest-first search with a heap, on the clearances themselves.
+double reference_bottleneck(const GuideBlocks& b, int from, int to) {
+  std::vector<double> width(static_cast<std::size_t>(b.size()), -kInf);
+  std::priority_queue<std::pair<double, int>> open;
+  width[static_cast<std::size_t>(from)] = kInf;
+  open.push({kInf, from});
+  while (!open.empty()) {
+    const double w = open.top().first;
+    const int i = open.top().second;
+    open.pop();
+    if (i == to)
+      return w;
+    if (w < width[static_cast<std::size_t>(i)])
+      continue;
+    b.for_neighbours(i, [&](int n) {
+      if (n != to && !b.open(n))
+        return;
+      const double c = n == to ? w : std::min(w, b.clearance(n));
+      if (c > width[static_cast<std::size_t>(n)]) {
+        width[static_cast<std::size_t>(n)] = c;
+        open.push({c, n});
+      }
+    });
+  }
+  return -kInf;
+}
+
+/// Step 3's cost of a move between neighbouring blocks.
+double move_cost(const GuideBlocks& b, int i, int n, double open) {
+  const double c = std::clamp(std::min(b.clearance(n), b.clearance(i)), 1e-3 * open, open);
+  return (b.centre(n) - b.centre(i)).norm() * (1.0 + open / c);
+}
+
+/// Step 3 as written: Dijkstra's search over every block cheaper than the route.
+double reference_cost(const GuideBlocks& b, int from, int to, double least, double open) {
+  std::vector<double> cost(static_cast<std::size_t>(b.size()), kInf);
+  std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>>
+      queue;
+  cost[static_cast<std::size_t>(from)] = 0.0;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const double g = queue.top().first;
+    const int i = queue.top().second;
+    queue.pop();
+    if (g > cost[static_cast<std::size_t>(i)])
+      continue;
+    b.for_neighbours(i, [&](int n) {
+      if (n != to && (!b.open(n) || b.clearance(n) < least))
+        return;
+      const double next = g + move_cost(b, i, n, open);
+      if (next < cost[static_cast<std::size_t>(n)]) {
+        cost[static_cast<std::size_t>(n)] = next;
+        queue.push({next, n});
+      }
+    });
+  }
+  return cost[static_cast<std::size_t>(to)];
+}
+
+TEST(WorkspaceGuide, TheRouteIsTheCheapestThroughBlocksHalfAsOpenAsTheBottleneck) {
+  // Two holes of different widths in a wall, and a box in the way below it.
+  std::vector<DistanceGrid::Box> boxes = wall(0.3, {-1.5, 1.0});
+  boxes.push_back({{-0.5, -2.0, -1.6}, {2.0, 0.5, -1.0}});
+  const DistanceGrid grid({kBounds.min, kBounds.max}, 0.05, {}, boxes);
+  const GuideBlocks blocks(grid, kBounds);
+  const double open = 0.5;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-2.9, 2.9);
+  int routes = 0, through_the_wall = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Eigen::Vector3d from(coordinate(rng), coordinate(rng), coordinate(rng));
+    const Eigen::Vector3d to(coordinate(rng), coordinate(rng), coordinate(rng));
+    const int first = blocks.block_of(grid, from);
+    const int last = blocks.block_of(grid, to);
+    const double width = reference_bottleneck(blocks, first, last);
+    const std::vector<GuidePoint> guide = find_guide(grid, blocks, from, to, open);
+    if (width == -kInf) {
+      EXPECT_TRUE(guide.empty());
+      continue;
+    }
+    const double least = std::isfinite(width) ? 0.5 * width : -width;
+    ASSERT_GE(guide.size(), 2u);
+    // The route's blocks: the ends' and those of the points between (each a block's centre).
+    std::vector<int> route{first};
+    for (std::size_t i = 1; i + 1 < guide.size(); ++i) {
+      route.push_back(blocks.block_of(grid, guide[i].point));
+      EXPECT_EQ(guide[i].clearance, blocks.clearance(route.back()));
+      EXPECT_GE(guide[i].clearance, least);
+    }
+    route.push_back(last);
+    double cost = 0.0;
+    for (std::size_t i = 1; i < route.size(); ++i)
+      cost += move_cost(blocks, route[i - 1], route[i], open);
+    const double best = reference_cost(blocks, first, last, least, open);
+    EXPECT_NEAR(cost, best, 1e-9 * best) << "from " << from.transpose() << " to " << to.transpose();
+    ++routes;
+    through_the_wall += (from.z() < -0.1) != (to.z() < -0.1) ? 1 : 0;
+  }
+  EXPECT_GT(routes, 50);
+  EXPECT_GT(through_the_wall, 20) << "routes through a hole, where the bottleneck is narrow";
 }
 
 TEST(WorkspaceGuide, EachBlockVisitsTheNeighboursTheCoarseGridHoldsInZYXOrder) {

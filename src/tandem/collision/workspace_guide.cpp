@@ -41,6 +41,7 @@ GuideBlocks::GuideBlocks(const DistanceGrid& grid, const Bounds& bounds) {
       }
     }
   }
+  level_ = best;
   clearance_.resize(n);
   centre_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -51,6 +52,7 @@ GuideBlocks::GuideBlocks(const DistanceGrid& grid, const Bounds& bounds) {
     }
     const Eigen::Vector3i c(i % d.x(), (i / d.x()) % d.y(), i / (d.x() * d.y()));
     clearance_[k] = grid.centre_bound(c);
+    level_clearance_[static_cast<std::size_t>(best[k])] = clearance_[k];
     centre_[k] = grid.centre(c);
   }
   std::size_t k = 0;
@@ -75,65 +77,78 @@ int GuideBlocks::block_of(const DistanceGrid& grid, const Eigen::Vector3d& p) co
 namespace {
 
 /// Step 2: the largest clearance joining `from` to `to` (the two ends not counted); -inf if none
-/// joins them.
+/// joins them. The widest-first search runs on the blocks' levels (a clearance grows with its
+/// level, and there are 256), with one stack of blocks per level instead of a heap: the widest
+/// block is on the highest stack that is not empty, and no block is pushed above the one popped.
 double bottleneck(const GuideBlocks& b, int from, int to) {
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  std::vector<double> width(static_cast<std::size_t>(b.size()), kNone);
-  std::priority_queue<std::pair<double, int>> open;  // widest first
-  width[static_cast<std::size_t>(from)] = std::numeric_limits<double>::infinity();
-  open.push({width[static_cast<std::size_t>(from)], from});
-  while (!open.empty()) {
-    // (Plain copies, not a structured binding: clang 14, the fuzzing build's compiler, cannot
-    // capture bindings in a lambda.)
-    const double w = open.top().first;
-    const int i = open.top().second;
-    open.pop();
+  constexpr int kEnds = 256;  // the level of `from`: wider than any block
+  std::vector<int> width(static_cast<std::size_t>(b.size()), -1);
+  std::array<std::vector<int>, kEnds + 1> stacks;
+  width[static_cast<std::size_t>(from)] = kEnds;
+  stacks[kEnds].push_back(from);
+  for (int top = kEnds; top >= 0;) {
+    if (stacks[static_cast<std::size_t>(top)].empty()) {
+      --top;
+      continue;
+    }
+    const int w = top;
+    const int i = stacks[static_cast<std::size_t>(top)].back();
+    stacks[static_cast<std::size_t>(top)].pop_back();
     if (i == to)
-      return w;
+      return w == kEnds ? std::numeric_limits<double>::infinity() : b.level_clearance(w);
     if (w < width[static_cast<std::size_t>(i)])
       continue;
     b.for_neighbours(i, [&](int n) {
       if (n != to && !b.open(n))
         return;
-      const double c = n == to ? w : std::min(w, b.clearance(n));
+      const int c = n == to ? w : std::min(w, b.level(n));
       if (c > width[static_cast<std::size_t>(n)]) {
         width[static_cast<std::size_t>(n)] = c;
-        open.push({c, n});
+        stacks[static_cast<std::size_t>(c)].push_back(n);
       }
     });
   }
-  return kNone;
+  return -std::numeric_limits<double>::infinity();
 }
 
-/// Step 3: the cheapest route from `from` to `to` through blocks at least `least` open.
+/// Step 3: the cheapest route from `from` to `to` through blocks at least `least` open. A* (Hart,
+/// Nilsson & Raphael 1968): a move costs at least twice its length (c <= open_width), so twice
+/// the straight distance to `to` never overestimates what is left, and no move lowers it by
+/// more than its own cost; the first time a block leaves the queue, its cost is the least, as
+/// with Dijkstra's search, which opens every block cheaper than the route.
 std::vector<int> route(const GuideBlocks& b, int from, int to, double least, double open_width) {
   constexpr double kFar = std::numeric_limits<double>::infinity();
   std::vector<double> cost(static_cast<std::size_t>(b.size()), kFar);
   std::vector<int> parent(static_cast<std::size_t>(b.size()), -1);
+  std::vector<bool> done(static_cast<std::size_t>(b.size()), false);
   using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  // cheapest first
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  // least estimate first
+  const Eigen::Vector3d& end = b.centre(to);
+  const auto left = [&](int n) { return 2.0 * (b.centre(n) - end).norm(); };
   cost[static_cast<std::size_t>(from)] = 0.0;
-  queue.push({0.0, from});
+  queue.push({left(from), from});
   const double floor = 1e-3 * open_width;
   while (!queue.empty()) {
-    const double g = queue.top().first;
     const int i = queue.top().second;
     queue.pop();
     if (i == to)
       break;
-    if (g > cost[static_cast<std::size_t>(i)])
+    if (done[static_cast<std::size_t>(i)])
       continue;
+    done[static_cast<std::size_t>(i)] = true;
+    const double g = cost[static_cast<std::size_t>(i)];
     const Eigen::Vector3d& p = b.centre(i);
+    const double ci = b.clearance(i);
     b.for_neighbours(i, [&](int n) {
       const double cn = b.clearance(n);
       if (n != to && (!b.open(n) || cn < least))
         return;
-      const double c = std::clamp(std::min(cn, b.clearance(i)), floor, open_width);
+      const double c = std::clamp(std::min(cn, ci), floor, open_width);
       const double step = (b.centre(n) - p).norm() * (1.0 + open_width / c);
       if (g + step < cost[static_cast<std::size_t>(n)]) {
         cost[static_cast<std::size_t>(n)] = g + step;
         parent[static_cast<std::size_t>(n)] = i;
-        queue.push({g + step, n});
+        queue.push({g + step + left(n), n});
       }
     });
   }

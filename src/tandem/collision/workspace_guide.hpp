@@ -13,7 +13,7 @@
 //   2. the bottleneck: the largest clearance b such that the start's and the goal's blocks are
 //      joined (26-neighbours) through blocks at least b open, the two end blocks not counted;
 //      blocks the grid does not know to be free (bound <= 0) are walls: no route passes them;
-//   3. the route: the shortest path (Dijkstra) through blocks at least b / 2 open, each move
+//   3. the route: the shortest path (A*) through blocks at least b / 2 open, each move
 //      costing its length times 1 + open / c, c its less open block's clearance (at most `open`,
 //      the part's longest half extent): open rooms are preferred to corridors along walls;
 //   4. the guide: the start's position, the route's cells' centres, the goal's position.
@@ -59,6 +59,13 @@ class GuideBlocks {
   const Eigen::Vector3d& centre(int i) const { return centre_[static_cast<std::size_t>(i)]; }
   /// Free space, as far as the grid knows: a positive bound.
   bool open(int i) const { return clearance(i) > 0.0; }
+  /// Its most open cell's value in the grid (0-255: clearance(i) grows with it), or -1 outside
+  /// the bounds.
+  int level(int i) const { return level_[static_cast<std::size_t>(i)]; }
+  /// The clearance of the blocks at `level` (one of theirs).
+  double level_clearance(int level) const {
+    return level_clearance_[static_cast<std::size_t>(level)];
+  }
   /// Visits the 26 neighbours of block i that are inside the coarse grid.
   template <class Visit>
   void for_neighbours(int i, Visit visit) const;
@@ -77,6 +84,8 @@ class GuideBlocks {
   Eigen::Vector3i dims_;
   int factor_ = 1;
   std::vector<double> clearance_;
+  std::vector<int> level_;
+  std::array<double, 256> level_clearance_{};
   std::vector<Eigen::Vector3d> centre_;
   std::array<int, 26> offsets_{};  ///< index(c + d) - index(c) for the 26 d, z outermost
 };
