@@ -1,8 +1,9 @@
 // The workspace-guided sampler on Twistycool (a part that must pass a wall's hole): its guide
 // crosses the wall through the hole, its samples follow the guide for the share asked, it retires
-// as long after the trees cover the guide as they took to, and before its warm-up, or with a share
-// of 0, it draws exactly the uniform samples. The checker's guide blocks, built once with its grid,
-// are those of the grid inside the space's bounds.
+// as long after the trees cover the guide as they took to, and before its warm-up (the hole is
+// narrower than the part lengthwise), or with a share of 0, it draws exactly the uniform samples.
+// On Easy, whose route the part fits lengthwise, it guides from the first iteration. The checker's
+// guide blocks, built once with its grid, are those of the grid inside the space's bounds.
 
 #include "tandem/sampling/guided_sampler.hpp"
 
@@ -145,6 +146,40 @@ TEST_F(GuidedSamplerTest, BeforeTheWarmUpOrWithoutAShareItDrawsTheUniformSamples
       ASSERT_TRUE(q.t == out.front().q.t && q.q.coeffs() == out.front().q.q.coeffs()) << i;
     }
   }
+}
+
+/// The narrowest clearance of a guide's points, its ends aside.
+double narrowest(const std::vector<GuidePoint>& g) {
+  double c = 1e300;
+  for (std::size_t k = 1; k + 1 < g.size(); ++k)
+    c = std::min(c, g[k].clearance);
+  return c;
+}
+
+TEST_F(GuidedSamplerTest, WhereThePartFitsTheRouteLengthwiseItGuidesFromTheFirstIteration) {
+  // Twistycool's hole is narrower than the part's second-largest half extent: a warm-up.
+  GuidedSampler twisty = sampler(1.0);
+  Rng rng(13);
+  draw(twisty, 0, rng);
+  ASSERT_GE(twisty.guide().size(), 3u);
+  EXPECT_LT(narrowest(twisty.guide()), checker_->object_extent().half_extents(1));
+  EXPECT_FALSE(twisty.covering()) << "no guiding before the warm-up";
+
+  // Easy's route is wider than that: guided from iteration 0 (share 1: every sample near it).
+  const Problem easy =
+      load_ompl_app_problem(test::shared_dir() / "benchmarks" / "omplapp" / "3D" / "Easy.cfg");
+  CollisionChecker checker(easy.scene);
+  MotionValidator(easy.space, checker, {MotionValidation::exact, 0.0, true});
+  GuidedSampler s(easy.space, checker, easy.start, easy.goal, 1.0);
+  draw(s, 0, rng);
+  ASSERT_GE(s.guide().size(), 3u);
+  EXPECT_GE(narrowest(s.guide()), checker.object_extent().half_extents(1));
+  EXPECT_TRUE(s.covering());
+  double widest = 0.1 * checker.object_extent().half_extents.maxCoeff();
+  for (const GuidePoint& g : s.guide())
+    widest = std::max(widest, g.clearance);
+  for (std::uint64_t i = 1; i < 100; ++i)
+    EXPECT_LT(off_guide(s.guide(), draw(s, i, rng).t), 6.0 * widest) << i;
 }
 
 TEST_F(GuidedSamplerTest, TheCheckersBlocksAreThoseOfItsGridInsideTheSpacesBounds) {

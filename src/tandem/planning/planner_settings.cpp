@@ -95,9 +95,10 @@ ParamTable<S> make_table() {
        .label = "workspace guide",
        .min = 0.0,
        .max = 1.0,
-       .help = "RRT-Connect's share of samples, after its first 200 iterations, drawn along a "
-               "route of the part from the start to the goal through the workspace's free space "
-               "(found on the distance grid); 0: none",
+       .help = "RRT-Connect's share of samples drawn along a route of the part from the start "
+               "to the goal through the workspace's free space (found on the distance grid), "
+               "from the first iteration where the route is open enough for the part lengthwise, "
+               "else after 200; 0: none",
        .group = "passages"},
       &S::guide));
   t.push_back(

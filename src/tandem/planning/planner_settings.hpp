@@ -36,8 +36,9 @@ struct PlannerSettings {
   /// RRT-Connect's share of iterations, after its first kPassageWarmup, that aim at passage
   /// islands (passage_islands.hpp); 0: none.
   double passages = 0.1;
-  /// RRT-Connect's share of uniform samples, after its first GuidedSampler::kGuideWarmup
-  /// iterations, drawn along a workspace guide (sampling/guided_sampler.hpp); 0: none.
+  /// RRT-Connect's share of uniform samples drawn along a workspace guide
+  /// (sampling/guided_sampler.hpp: from the first iteration where the part fits the route
+  /// lengthwise, else after GuidedSampler::kGuideWarmup); 0: none.
   double guide = 0.75;
   /// RRT's and the I-RRT's probability of extending toward the goal, in [0, 1].
   double goal_bias = 0.05;

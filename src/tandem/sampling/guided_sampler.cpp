@@ -1,6 +1,7 @@
 #include "tandem/sampling/guided_sampler.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace tandem {
 
@@ -26,7 +27,16 @@ void GuidedSampler::find() {
   if (guide_->size() < 2 || !(s > 0.0))
     guide_->clear();
   covered_.assign(guide_->size(), false);
+  start_at_ = first_guided_iteration();
   uncovered_ = guide_->size();
+}
+
+std::uint64_t GuidedSampler::first_guided_iteration() const {
+  const std::vector<GuidePoint>& g = *guide_;
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k + 1 < g.size(); ++k)
+    narrowest = std::min(narrowest, g[k].clearance);
+  return narrowest >= checker_.object_extent().half_extents(1) ? 0 : kGuideWarmup;
 }
 
 void GuidedSampler::cover(const Eigen::Vector3d& p) {
@@ -43,13 +53,13 @@ void GuidedSampler::cover(const Eigen::Vector3d& p) {
 
 void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& out) {
   Rng& rng = *request.rng;
-  if (share_ > 0.0 && request.iteration >= kGuideWarmup && !guide_)
+  if (share_ > 0.0 && !guide_)
     find();
+  started_ = started_ || (guide_ && !guide_->empty() && request.iteration >= start_at_);
   Config q = space_.sample_uniform(rng);
-  if (guide_ && uncovered_ == 0 && retire_at_ == 0)
+  if (started_ && uncovered_ == 0 && retire_at_ == 0)
     retire_at_ = 2 * request.iteration;
-  const bool guiding =
-      guide_ && !guide_->empty() && (uncovered_ > 0 || request.iteration < retire_at_);
+  const bool guiding = started_ && (uncovered_ > 0 || request.iteration < retire_at_);
   if (guiding && rng.uniform01() < share_)
     q.t = along(rng);
   out.push_back({q, NodeSource::random});

@@ -3,8 +3,12 @@
 // (collision/workspace_guide.hpp): a route of the part's reference point from the start to the
 // goal through the workspace's free space, found on the distance grid.
 //
-// Each iteration, after the first kGuideWarmup (most problems are solved sooner, and finding the
-// guide costs a few milliseconds):
+// The guide is found at the first iteration (a fraction of a millisecond). Where the route is
+// open enough for the part lengthwise (its narrowest point, the ends aside, at least the part's
+// second-largest half extent from the obstacles: with its longest axis along the route, the part
+// roughly fits), the route is a strong hint and guides from the first iteration; elsewhere
+// (the part must turn to pass, or cannot pass at all) the trees first spread by uniform samples
+// for kGuideWarmup iterations, measured to pay there (README). Then, each iteration:
 //   1. with probability `share`, a point drawn uniformly along the guide (by length), moved by a
 //      Gaussian of the guide's clearance there (at least a tenth of the part's longest half
 //      extent) and kept in the bounds, is the sample's position; its orientation is uniform;
@@ -32,7 +36,7 @@ namespace tandem {
 
 class GuidedSampler final : public TargetSampler {
  public:
-  /// Iterations with uniform samples only, before the guide is found.
+  /// Iterations with uniform samples only, where the route is too narrow for the part lengthwise.
   static constexpr std::uint64_t kGuideWarmup = 200;
 
   GuidedSampler(const SE3Space& space, const CollisionChecker& checker, const Config& start,
@@ -42,7 +46,7 @@ class GuidedSampler final : public TargetSampler {
   /// Step 3: a node of either tree at p covers the guide's points within their spread of it.
   void cover(const Eigen::Vector3d& p);
   /// Whether cover() still has something to do.
-  bool covering() const { return guide_ && uncovered_ > 0; }
+  bool covering() const { return started_ && uncovered_ > 0; }
 
   /// The guide, once found (empty when there is none).
   const std::vector<GuidePoint>& guide() const { return guide_ ? *guide_ : kNoGuide; }
@@ -51,6 +55,9 @@ class GuidedSampler final : public TargetSampler {
   inline static const std::vector<GuidePoint> kNoGuide;
 
   void find();
+  /// The iteration the guide starts at: 0 where the part fits the route lengthwise, else
+  /// kGuideWarmup.
+  std::uint64_t first_guided_iteration() const;
   /// Step 1's position, s along the guide's length.
   Eigen::Vector3d along(Rng& rng);
 
@@ -61,6 +68,8 @@ class GuidedSampler final : public TargetSampler {
   double share_;
   double least_spread_ = 0.0;
   std::optional<std::vector<GuidePoint>> guide_;
+  std::uint64_t start_at_ = 0;  ///< first_guided_iteration(), once found
+  bool started_ = false;        ///< guiding (or retired): start_at_ has come
   std::vector<double> length_;  ///< the guide's length up to each point
   std::vector<bool> covered_;
   std::size_t uncovered_ = 0;
