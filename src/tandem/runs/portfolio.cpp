@@ -14,9 +14,11 @@
 namespace tandem {
 namespace {
 
-/// Iterations a member runs between two looks at the race: small against a solve's thousands,
-/// large against the look's cost (a lock).
-constexpr std::uint64_t kChunk = 16;
+/// Iterations a member runs between two looks at the race. One: a member that can no longer win
+/// stops within an iteration of it (Easy is solved in a few dozen iterations, so 16 kept the
+/// loser busy for up to half a solve), and a look (an uncontended lock) costs far less than an
+/// iteration.
+constexpr std::uint64_t kChunk = 1;
 
 /// The best solved member so far, and whether the portfolio was abandoned (an error).
 ///
