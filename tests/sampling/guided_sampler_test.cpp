@@ -2,7 +2,8 @@
 // crosses the wall through the hole, its samples follow the guide for the share asked, it retires
 // as long after the trees cover the guide as they took to, and before its warm-up (the hole is
 // narrower than the part lengthwise), or with a share of 0, it draws exactly the uniform samples.
-// On Easy, whose route the part fits lengthwise, it guides from the first iteration. The checker's
+// On Easy, whose route the part fits lengthwise, it guides from the first iteration, and half of
+// its guided samples turn the part's longest axis along the route. The checker's
 // guide blocks, built once with its grid, are those of the grid inside the space's bounds.
 
 #include "tandem/sampling/guided_sampler.hpp"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "support/test_support.hpp"
@@ -148,6 +150,18 @@ TEST_F(GuidedSamplerTest, BeforeTheWarmUpOrWithoutAShareItDrawsTheUniformSamples
   }
 }
 
+/// Whether the part's longest axis (`axis`, in its frame) lies along a segment of the guide at q.
+bool along_a_segment(const std::vector<GuidePoint>& g, const Eigen::Vector3d& axis,
+                     const Config& q) {
+  const Eigen::Vector3d world = q.q * axis;
+  for (std::size_t k = 1; k < g.size(); ++k) {
+    const Eigen::Vector3d d = g[k].point - g[k - 1].point;
+    if (d.norm() > 0.0 && std::abs(world.dot(d.normalized())) > 1.0 - 1e-9)
+      return true;
+  }
+  return false;
+}
+
 /// The narrowest clearance of a guide's points, its ends aside.
 double narrowest(const std::vector<GuidePoint>& g) {
   double c = 1e300;
@@ -178,8 +192,26 @@ TEST_F(GuidedSamplerTest, WhereThePartFitsTheRouteLengthwiseItGuidesFromTheFirst
   double widest = 0.1 * checker.object_extent().half_extents.maxCoeff();
   for (const GuidePoint& g : s.guide())
     widest = std::max(widest, g.clearance);
-  for (std::uint64_t i = 1; i < 100; ++i)
-    EXPECT_LT(off_guide(s.guide(), draw(s, i, rng).t), 6.0 * widest) << i;
+  // Half of the guided samples turn the part's longest axis along the route; Twistycool's, whose
+  // part does not fit its route lengthwise, keep uniform orientations.
+  const Eigen::Vector3d axis = checker.object_extent().axes.col(0);
+  int aligned = 0;
+  const int n = 400;
+  for (int i = 1; i <= n; ++i) {
+    const Config q = draw(s, static_cast<std::uint64_t>(i), rng);
+    EXPECT_LT(off_guide(s.guide(), q.t), 6.0 * widest) << i;
+    EXPECT_NEAR(q.q.norm(), 1.0, 1e-9);
+    aligned += along_a_segment(s.guide(), axis, q) ? 1 : 0;
+  }
+  EXPECT_GT(aligned, 0.4 * n);
+  EXPECT_LT(aligned, 0.6 * n);
+  const Eigen::Vector3d twisty_axis = checker_->object_extent().axes.col(0);
+  int twisty_aligned = 0;
+  for (int i = 0; i < n; ++i)
+    twisty_aligned += along_a_segment(
+        twisty.guide(), twisty_axis,
+        draw(twisty, GuidedSampler::kGuideWarmup + static_cast<std::uint64_t>(i), rng));
+  EXPECT_EQ(twisty_aligned, 0);
 }
 
 TEST_F(GuidedSamplerTest, TheCheckersBlocksAreThoseOfItsGridInsideTheSpacesBounds) {

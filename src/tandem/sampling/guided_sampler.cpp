@@ -1,6 +1,8 @@
 #include "tandem/sampling/guided_sampler.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace tandem {
@@ -15,7 +17,9 @@ void GuidedSampler::find() {
   const GuideBlocks* blocks = checker_.guide_blocks();
   if (grid == nullptr || blocks == nullptr || space_.planar())
     return;
-  const double open = checker_.object_extent().half_extents.maxCoeff();
+  const ObjectExtent extent = checker_.object_extent();
+  long_axis_ = extent.axes.col(0);
+  const double open = extent.half_extents.maxCoeff();
   least_spread_ = 0.1 * open;
   *guide_ = find_guide(*grid, *blocks, start_, goal_, open);
   double s = 0.0;
@@ -27,16 +31,16 @@ void GuidedSampler::find() {
   if (guide_->size() < 2 || !(s > 0.0))
     guide_->clear();
   covered_.assign(guide_->size(), false);
-  start_at_ = first_guided_iteration();
+  lengthwise_ = fits_lengthwise(extent);
   uncovered_ = guide_->size();
 }
 
-std::uint64_t GuidedSampler::first_guided_iteration() const {
+bool GuidedSampler::fits_lengthwise(const ObjectExtent& extent) const {
   const std::vector<GuidePoint>& g = *guide_;
   double narrowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 1; k + 1 < g.size(); ++k)
     narrowest = std::min(narrowest, g[k].clearance);
-  return narrowest >= checker_.object_extent().half_extents(1) ? 0 : kGuideWarmup;
+  return narrowest >= extent.half_extents(1);
 }
 
 void GuidedSampler::cover(const Eigen::Vector3d& p) {
@@ -55,17 +59,18 @@ void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& ou
   Rng& rng = *request.rng;
   if (share_ > 0.0 && !guide_)
     find();
-  started_ = started_ || (guide_ && !guide_->empty() && request.iteration >= start_at_);
+  started_ = started_ ||
+             (guide_ && !guide_->empty() && request.iteration >= (lengthwise_ ? 0 : kGuideWarmup));
   Config q = space_.sample_uniform(rng);
   if (started_ && uncovered_ == 0 && retire_at_ == 0)
     retire_at_ = 2 * request.iteration;
   const bool guiding = started_ && (uncovered_ > 0 || request.iteration < retire_at_);
   if (guiding && rng.uniform01() < share_)
-    q.t = along(rng);
+    along(rng, q);
   out.push_back({q, NodeSource::random});
 }
 
-Eigen::Vector3d GuidedSampler::along(Rng& rng) {
+void GuidedSampler::along(Rng& rng, Config& q) const {
   const std::vector<GuidePoint>& g = *guide_;
   const double s = rng.uniform(0.0, length_.back());
   const std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
@@ -79,7 +84,13 @@ Eigen::Vector3d GuidedSampler::along(Rng& rng) {
   const Eigen::Vector3d moved =
       p + spread * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian());
   const Bounds& b = space_.bounds();
-  return moved.cwiseMax(b.min).cwiseMin(b.max);
+  q.t = moved.cwiseMax(b.min).cwiseMin(b.max);
+  const Eigen::Vector3d along_route = g[k].point - g[k - 1].point;
+  if (!lengthwise_ || !(span > 0.0) || rng.uniform01() >= 0.5)
+    return;
+  const Eigen::Vector3d axis = (rng.uniform01() < 0.5 ? 1.0 : -1.0) * along_route.normalized();
+  q.q = Eigen::AngleAxisd(rng.uniform(-M_PI, M_PI), axis) *
+        Eigen::Quaterniond::FromTwoVectors(long_axis_, axis);
 }
 
 }  // namespace tandem

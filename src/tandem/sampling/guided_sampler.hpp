@@ -11,7 +11,9 @@
 // for kGuideWarmup iterations, measured to pay there (README). Then, each iteration:
 //   1. with probability `share`, a point drawn uniformly along the guide (by length), moved by a
 //      Gaussian of the guide's clearance there (at least a tenth of the part's longest half
-//      extent) and kept in the bounds, is the sample's position; its orientation is uniform;
+//      extent) and kept in the bounds, is the sample's position; its orientation is uniform, or,
+//      where the part fits the route lengthwise, for half of these samples the part's longest
+//      axis lies along the route there (either way along it, turned about it uniformly);
 //   2. otherwise a uniform sample, as without a guide;
 //   3. once the trees' nodes have covered every point of the guide (a node within the point's
 //      spread), at iteration i, the guide has little more to say: the trees have reached each
@@ -55,11 +57,12 @@ class GuidedSampler final : public TargetSampler {
   inline static const std::vector<GuidePoint> kNoGuide;
 
   void find();
-  /// The iteration the guide starts at: 0 where the part fits the route lengthwise, else
-  /// kGuideWarmup.
-  std::uint64_t first_guided_iteration() const;
-  /// Step 1's position, s along the guide's length.
-  Eigen::Vector3d along(Rng& rng);
+  /// Whether the part fits the route lengthwise: the guide's narrowest point, its ends aside, at
+  /// least the part's second-largest half extent from the obstacles.
+  bool fits_lengthwise(const ObjectExtent& extent) const;
+  /// Step 1's configuration, s along the guide's length (q.q untouched unless it is turned along
+  /// the route).
+  void along(Rng& rng, Config& q) const;
 
   const SE3Space& space_;
   const CollisionChecker& checker_;
@@ -68,8 +71,9 @@ class GuidedSampler final : public TargetSampler {
   double share_;
   double least_spread_ = 0.0;
   std::optional<std::vector<GuidePoint>> guide_;
-  std::uint64_t start_at_ = 0;  ///< first_guided_iteration(), once found
-  bool started_ = false;        ///< guiding (or retired): start_at_ has come
+  bool lengthwise_ = false;                               ///< fits_lengthwise(), once found
+  Eigen::Vector3d long_axis_ = Eigen::Vector3d::UnitX();  ///< the part's, in its frame
+  bool started_ = false;        ///< guiding (or retired): its first iteration has come
   std::vector<double> length_;  ///< the guide's length up to each point
   std::vector<bool> covered_;
   std::size_t uncovered_ = 0;
