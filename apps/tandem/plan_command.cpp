@@ -75,6 +75,7 @@ nlohmann::json plan_json(const PlanArgs& args, const Problem& problem, const Pla
                                              spec.time_limit, run, solved));
   j["source"] = problem.source;
   j["mode"] = spec.mode;
+  j["member_planner"] = run.member_planner;
   add_settings(j, tunables, problem, spec, run);
   j["path_length"] = solved ? nlohmann::json(path_length(problem.space, planned.path)) : nullptr;
   j["raw_path_length"] = solved ? nlohmann::json(run.path_length) : nullptr;
@@ -104,7 +105,7 @@ void print_summary(const PlanArgs& args, const Problem& problem, const PlanRun& 
             << " collision checks (seed " << spec.settings.seed;
   if (run.threads > 1) {
     std::cout << ", best of " << run.threads << " searches on as many threads: member "
-              << run.member << ", " << member_planner(spec.mode, run.member);
+              << run.member << ", " << run.member_planner;
   }
   std::cout << ")\n";
   if (uses_operator(spec)) {

@@ -11,14 +11,17 @@
 #include <set>
 
 #include "support/problems.hpp"
+#include "tandem/collision/motion_validator.hpp"
 #include "tandem/runs/run_spec.hpp"
 
 namespace tandem {
 namespace {
 
-RunSpec birrt_spec(std::uint64_t seed, unsigned threads, std::string_view mode = "birrt") {
+RunSpec birrt_spec(std::uint64_t seed, unsigned threads, std::string_view mode = "birrt",
+                   double guide = PlannerSettings{}.guide) {
   RunSpec spec = default_spec(mode, {});
   spec.mode = mode;
+  spec.settings.guide = guide;
   spec.settings.seed = seed;
   spec.settings.threads = threads;
   spec.time_limit = 1e9;
@@ -27,9 +30,9 @@ RunSpec birrt_spec(std::uint64_t seed, unsigned threads, std::string_view mode =
 
 /// Member i alone: the plain run of its planner with its seed.
 RunOutcome alone(const Problem& problem, std::uint64_t seed, unsigned member,
-                 std::string_view mode = "birrt") {
+                 std::string_view mode = "birrt", double guide = PlannerSettings{}.guide) {
   return execute_run(problem,
-                     birrt_spec(member_seed(seed, member), 1, member_planner(mode, member)));
+                     birrt_spec(member_seed(seed, member), 1, member_planner(mode, member), guide));
 }
 
 TEST(Portfolio, MemberZeroHasTheRunsSeedAndTheOthersDifferentOnes) {
@@ -56,7 +59,8 @@ TEST(Portfolio, OneMemberIsThePlainRun) {
 /// For each seed: the member that solves with the fewest checks, run alone, is the portfolio's
 /// outcome, every time (the threads' timing differs from run to run, the winner does not).
 void expect_the_least_work_wins(std::string_view mode, std::initializer_list<std::uint64_t> seeds,
-                                std::set<unsigned>& winners) {
+                                std::set<unsigned>& winners,
+                                double guide = PlannerSettings{}.guide) {
   const Problem problem = test::detour_problem();
   constexpr unsigned kThreads = 4;
   for (std::uint64_t seed : seeds) {
@@ -65,7 +69,7 @@ void expect_the_least_work_wins(std::string_view mode, std::initializer_list<std
     RunOutcome best;
     unsigned best_index = 0;
     for (unsigned i = 0; i < kThreads; ++i) {
-      const RunOutcome o = alone(problem, seed, i, mode);
+      const RunOutcome o = alone(problem, seed, i, mode, guide);
       ASSERT_EQ(o.status, PlannerStatus::solved);
       if (o.stats.collision_checks < least) {
         least = o.stats.collision_checks;
@@ -75,7 +79,7 @@ void expect_the_least_work_wins(std::string_view mode, std::initializer_list<std
     }
     winners.insert(best_index);
     for (int repeat = 0; repeat < 3; ++repeat) {
-      const RunOutcome o = execute_run(problem, birrt_spec(seed, kThreads, mode));
+      const RunOutcome o = execute_run(problem, birrt_spec(seed, kThreads, mode, guide));
       EXPECT_EQ(o.status, PlannerStatus::solved);
       EXPECT_EQ(o.threads, kThreads);
       EXPECT_EQ(o.member, best_index);
@@ -100,8 +104,9 @@ TEST(Portfolio, TheMixedPortfolioRunsRrtConnectAndRrtOnAlternateMembers) {
   EXPECT_EQ(member_planner(kMixedPortfolio, 1), "rrt");
   EXPECT_EQ(member_planner(kMixedPortfolio, 2), "birrt");
   EXPECT_EQ(member_planner("rrt", 0), "rrt");
+  // Without a workspace guide (the detour's part fits its route lengthwise, below).
   std::set<unsigned> winners;
-  expect_the_least_work_wins(kMixedPortfolio, {1, 2, 5}, winners);
+  expect_the_least_work_wins(kMixedPortfolio, {1, 2, 5}, winners, 0.0);
   bool rrt_won = false, birrt_won = false;
   for (unsigned w : winners)
     (w % 2 == 0 ? birrt_won : rrt_won) = true;
@@ -110,6 +115,31 @@ TEST(Portfolio, TheMixedPortfolioRunsRrtConnectAndRrtOnAlternateMembers) {
   const Problem problem = test::detour_problem();
   EXPECT_EQ(execute_run(problem, birrt_spec(5, 1, kMixedPortfolio)).tree_digest,
             execute_run(problem, birrt_spec(5, 1)).tree_digest);
+}
+
+TEST(Portfolio, WhereTheRouteLeadsTheMixedPortfolioRunsRrtConnectOnEveryMember) {
+  EXPECT_EQ(member_planner(kMixedPortfolio, 1, true), "birrt");
+  EXPECT_EQ(member_planner(kMixedPortfolio, 3, true), "birrt");
+  const Problem problem = test::detour_problem();
+  CollisionChecker checker(problem.scene);
+  MotionValidator(problem.space, checker);  // the distance grid, as a run builds it
+  EXPECT_TRUE(route_leads(problem, birrt_spec(1, 4, kMixedPortfolio), checker));
+  EXPECT_FALSE(route_leads(problem, birrt_spec(1, 4, kMixedPortfolio, 0.0), checker));
+  EXPECT_FALSE(route_leads(problem, birrt_spec(1, 4, "rrt"), checker));
+  std::set<unsigned> winners;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const RunOutcome mixed = execute_run(problem, birrt_spec(seed, 4, kMixedPortfolio));
+    const RunOutcome birrt = execute_run(problem, birrt_spec(seed, 4));
+    winners.insert(birrt.member);
+    EXPECT_EQ(mixed.member_planner, "birrt");
+    EXPECT_EQ(mixed.member, birrt.member);
+    EXPECT_EQ(mixed.tree_digest, birrt.tree_digest);
+    // Without the guide, the alternation.
+    const RunOutcome unguided = execute_run(problem, birrt_spec(seed, 4, kMixedPortfolio, 0.0));
+    EXPECT_EQ(unguided.member_planner, unguided.member % 2 == 0 ? "birrt" : "rrt");
+  }
+  // The seeds are such that an odd member wins: one that the alternation would make an RRT.
+  EXPECT_TRUE(winners.count(1) > 0 || winners.count(3) > 0);
 }
 
 TEST(Portfolio, CountsEveryMembersCollisionChecks) {

@@ -10,6 +10,7 @@
 #include "tandem/core/rng.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/planning/planner_registry.hpp"
+#include "tandem/sampling/guided_sampler.hpp"
 
 namespace tandem {
 namespace {
@@ -72,14 +73,16 @@ class Race {
 /// One search of the portfolio, with everything it owns.
 struct Member {
   Member(const Problem& problem, const RunSpec& spec, const CollisionChecker& shared,
-         unsigned index)
-      : checker(shared.clone()), validator(problem.space, checker) {
+         unsigned index, bool route_led)
+      : name(member_planner(spec.mode, index, route_led)),
+        checker(shared.clone()),
+        validator(problem.space, checker) {
     PlannerSettings settings = spec.settings;
     settings.seed = member_seed(spec.settings.seed, index);
-    planner = make_planner(member_planner(spec.mode, index), validator, problem.start, problem.goal,
-                           settings);
+    planner = make_planner(name, validator, problem.start, problem.goal, settings);
   }
 
+  std::string_view name;  ///< its planner
   CollisionChecker checker;
   MotionValidator validator;
   std::unique_ptr<Planner> planner;
@@ -121,10 +124,18 @@ std::uint64_t member_seed(std::uint64_t seed, unsigned index) {
   return s;
 }
 
-std::string_view member_planner(std::string_view mode, unsigned index) {
+std::string_view member_planner(std::string_view mode, unsigned index, bool route_led) {
   if (mode == kMixedPortfolio)
-    return index % 2 == 0 ? "birrt" : "rrt";
+    return index % 2 == 0 || route_led ? "birrt" : "rrt";
   return mode;
+}
+
+bool route_leads(const Problem& problem, const RunSpec& spec, const CollisionChecker& checker) {
+  if (spec.mode != kMixedPortfolio || !(spec.settings.guide > 0.0))
+    return false;
+  const ObjectExtent extent = checker.object_extent();
+  return fits_lengthwise(
+      workspace_route(problem.space, checker, problem.start.t, problem.goal.t, extent), extent);
 }
 
 unsigned resolve_threads(const RunSpec& spec) {
@@ -138,9 +149,10 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   // The distance grid once, before the clones that share it (not timed, as for one thread).
   MotionValidator(problem.space, checker, validation_settings(spec.settings));
   const Stopwatch wall;
+  const bool route_led = route_leads(problem, spec, checker);
   std::vector<std::unique_ptr<Member>> members;
   for (unsigned i = 0; i < threads; ++i)
-    members.push_back(std::make_unique<Member>(problem, spec, checker, i));
+    members.push_back(std::make_unique<Member>(problem, spec, checker, i, route_led));
 
   Race race;
   std::mutex error_mutex;
@@ -178,6 +190,7 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   outcome.stats.time_s = wall.seconds();
   outcome.threads = threads;
   outcome.member = shown;
+  outcome.member_planner = m.name;
   return outcome;
 }
 

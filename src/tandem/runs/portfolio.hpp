@@ -2,10 +2,12 @@
 // Every core on one problem: a portfolio of independent searches (Gomes & Selman, "Algorithm
 // portfolios", AI 2001). A sampling planner's run time is heavy-tailed — a few seeds take many
 // times the median — so the first of k independent runs to finish is far sooner than one run,
-// more than k times sooner in the tail. Member i runs the spec's planner (for "birrt+rrt":
-// RRT-Connect on even members, goal-biased RRT on odd ones, which are fast where the other is
-// slow) with seed member_seed(seed, i), on its own thread, with its own clone of the collision
-// checker.
+// more than k times sooner in the tail. Member i runs the spec's planner with seed
+// member_seed(seed, i), on its own thread, with its own clone of the collision checker. For
+// "birrt+rrt": RRT-Connect on even members and goal-biased RRT on odd ones, which are fast where
+// the other is slow (the alpha puzzle, whose difficulty is the part's orientation); but where the
+// part fits the workspace route lengthwise (sampling/guided_sampler.hpp), the route leads
+// RRT-Connect's samples and RRT-Connect on every member was measured faster (README).
 //
 // Deterministic: the winner is the member that solves with the least work (its collision checks,
 // as deterministic as its iterations), the lower index on a tie — not the first to finish in time,
@@ -23,8 +25,13 @@
 namespace tandem {
 
 /// The planner member `index` of a portfolio of `mode` runs: `mode` itself, but for
-/// kMixedPortfolio.
-std::string_view member_planner(std::string_view mode, unsigned index);
+/// kMixedPortfolio: "birrt" on even members and "rrt" on odd ones, or "birrt" on every member
+/// where the route leads (route_leads).
+std::string_view member_planner(std::string_view mode, unsigned index, bool route_led = false);
+
+/// Whether spec is the mixed portfolio with a workspace guide (settings.guide > 0) on a problem
+/// whose part fits the workspace route lengthwise (fits_lengthwise, guided_sampler.hpp).
+bool route_leads(const Problem& problem, const RunSpec& spec, const CollisionChecker& checker);
 
 /// The seed of member `index`: the run's seed for member 0 (one thread is the plain run), then
 /// the run's seed generator's successive outputs.

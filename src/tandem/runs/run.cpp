@@ -90,6 +90,7 @@ RunOutcome execute_run(const Problem& problem, const RunSpec& spec, CollisionChe
   termination.max_iterations = spec.max_iterations;
   termination.stop = spec.stop;
   RunOutcome outcome = planner_outcome(problem, *planner, planner->solve(termination));
+  outcome.member_planner = member_planner(spec.mode, 0);
   outcome.operator_description = std::move(operator_description);
   if (feed != nullptr)
     outcome.operator_waits = feed->operator_waits();

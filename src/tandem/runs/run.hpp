@@ -39,8 +39,10 @@ struct RunOutcome {
   std::uint64_t tree_digest = 0;
   /// Searches run at once (portfolio.hpp); 1 for the planners that take an operator.
   unsigned threads = 1;
-  /// The portfolio's member whose search this is (0 for one thread; birrt+rrt: odd ones are RRT).
+  /// The portfolio's member whose search this is (0 for one thread).
   unsigned member = 0;
+  /// That member's planner (the spec's mode, but "birrt" or "rrt" for birrt+rrt: portfolio.hpp).
+  std::string member_planner;
 };
 
 /// Throws InputError for a spec the problem cannot run (a planner that takes an operator on a

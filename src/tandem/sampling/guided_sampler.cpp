@@ -11,36 +11,46 @@ GuidedSampler::GuidedSampler(const SE3Space& space, const CollisionChecker& chec
                              const Config& start, const Config& goal, double share)
     : space_(space), checker_(checker), start_(start.t), goal_(goal.t), share_(share) {}
 
+std::vector<GuidePoint> workspace_route(const SE3Space& space, const CollisionChecker& checker,
+                                        const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
+                                        const ObjectExtent& extent) {
+  const DistanceGrid* grid = checker.distance_grid();
+  const GuideBlocks* blocks = checker.guide_blocks();
+  if (grid == nullptr || blocks == nullptr || space.planar())
+    return {};
+  std::vector<GuidePoint> route =
+      find_guide(*grid, *blocks, start, goal, extent.half_extents.maxCoeff());
+  double length = 0.0;
+  for (std::size_t k = 1; k < route.size(); ++k)
+    length += (route[k].point - route[k - 1].point).norm();
+  if (route.size() < 2 || !(length > 0.0))
+    route.clear();
+  return route;
+}
+
+bool fits_lengthwise(const std::vector<GuidePoint>& route, const ObjectExtent& extent) {
+  if (route.empty())
+    return false;
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k + 1 < route.size(); ++k)
+    narrowest = std::min(narrowest, route[k].clearance);
+  return narrowest >= extent.half_extents(1);
+}
+
 void GuidedSampler::find() {
-  guide_.emplace();
-  const DistanceGrid* grid = checker_.distance_grid();
-  const GuideBlocks* blocks = checker_.guide_blocks();
-  if (grid == nullptr || blocks == nullptr || space_.planar())
-    return;
   const ObjectExtent extent = checker_.object_extent();
+  guide_ = workspace_route(space_, checker_, start_, goal_, extent);
   long_axis_ = extent.axes.col(0);
-  const double open = extent.half_extents.maxCoeff();
-  least_spread_ = 0.1 * open;
-  *guide_ = find_guide(*grid, *blocks, start_, goal_, open);
+  least_spread_ = 0.1 * extent.half_extents.maxCoeff();
   double s = 0.0;
   for (std::size_t k = 0; k < guide_->size(); ++k) {
     if (k > 0)
       s += ((*guide_)[k].point - (*guide_)[k - 1].point).norm();
     length_.push_back(s);
   }
-  if (guide_->size() < 2 || !(s > 0.0))
-    guide_->clear();
   covered_.assign(guide_->size(), false);
-  lengthwise_ = fits_lengthwise(extent);
+  lengthwise_ = fits_lengthwise(*guide_, extent);
   uncovered_ = guide_->size();
-}
-
-bool GuidedSampler::fits_lengthwise(const ObjectExtent& extent) const {
-  const std::vector<GuidePoint>& g = *guide_;
-  double narrowest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k + 1 < g.size(); ++k)
-    narrowest = std::min(narrowest, g[k].clearance);
-  return narrowest >= extent.half_extents(1);
 }
 
 void GuidedSampler::cover(const Eigen::Vector3d& p) {

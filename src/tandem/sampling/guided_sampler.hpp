@@ -36,6 +36,16 @@
 
 namespace tandem {
 
+/// The workspace guide from start to goal as GuidedSampler finds it: empty where there is none
+/// (no distance grid, a planar space, no route on the grid).
+std::vector<GuidePoint> workspace_route(const SE3Space& space, const CollisionChecker& checker,
+                                        const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
+                                        const ObjectExtent& extent);
+
+/// Whether the part fits the route lengthwise: the route's narrowest point, its ends aside, at
+/// least the part's second-largest half extent from the obstacles (false without a route).
+bool fits_lengthwise(const std::vector<GuidePoint>& route, const ObjectExtent& extent);
+
 class GuidedSampler final : public TargetSampler {
  public:
   /// Iterations with uniform samples only, where the route is too narrow for the part lengthwise.
@@ -57,9 +67,6 @@ class GuidedSampler final : public TargetSampler {
   inline static const std::vector<GuidePoint> kNoGuide;
 
   void find();
-  /// Whether the part fits the route lengthwise: the guide's narrowest point, its ends aside, at
-  /// least the part's second-largest half extent from the obstacles.
-  bool fits_lengthwise(const ObjectExtent& extent) const;
   /// Step 1's configuration, s along the guide's length (q.q untouched unless it is turned along
   /// the route).
   void along(Rng& rng, Config& q) const;
@@ -71,7 +78,7 @@ class GuidedSampler final : public TargetSampler {
   double share_;
   double least_spread_ = 0.0;
   std::optional<std::vector<GuidePoint>> guide_;
-  bool lengthwise_ = false;                               ///< fits_lengthwise(), once found
+  bool lengthwise_ = false;                               ///< fits_lengthwise(guide), once found
   Eigen::Vector3d long_axis_ = Eigen::Vector3d::UnitX();  ///< the part's, in its frame
   bool started_ = false;        ///< guiding (or retired): its first iteration has come
   std::vector<double> length_;  ///< the guide's length up to each point
