@@ -59,7 +59,8 @@ const std::vector<PlannerEntry> kRegistry = {
      .ompl_range = "rrt"},
     {.name = kMixedPortfolio,
      .description = "the computer alone, one search per thread: RRT-Connect and goal-biased RRT "
-                    "on alternate threads (one thread: RRT-Connect)",
+                    "on alternate threads, or RRT-Connect on every thread where the part fits the "
+                    "workspace route lengthwise (one thread: RRT-Connect)",
      .citation = "Gomes & Selman, AI 2001 (algorithm portfolios)",
      .groups = {"goal_bias", "portfolio", "passages"},
      .make = make_birrt},
