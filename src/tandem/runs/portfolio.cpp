@@ -157,19 +157,25 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   Race race;
   std::mutex error_mutex;
   std::exception_ptr error;
+  const auto run = [&](unsigned i) {
+    try {
+      run_member(*members[i], i, spec, race);
+    } catch (...) {
+      const std::lock_guard lock(error_mutex);
+      if (!error)
+        error = std::current_exception();
+      race.abandon();
+    }
+  };
+  // Member 0 on this thread. Waiting here in join() instead, after single-threaded work (loading,
+  // the grid, a previous run), left a core idle while the last new thread queued behind a member
+  // on the other core: Linux skips pulling work onto a core that was busy until just now
+  // (sched_migration_cost), so on 2 cores the second member started up to 4 ms late (measured in
+  // tandem-vs-ompl, whose OMPL runs are single-threaded).
   std::vector<std::thread> pool;
-  for (unsigned i = 0; i < threads; ++i) {
-    pool.emplace_back([&, i] {
-      try {
-        run_member(*members[i], i, spec, race);
-      } catch (...) {
-        const std::lock_guard lock(error_mutex);
-        if (!error)
-          error = std::current_exception();
-        race.abandon();
-      }
-    });
-  }
+  for (unsigned i = 1; i < threads; ++i)
+    pool.emplace_back(run, i);
+  run(0);
   for (auto& t : pool)
     t.join();
   if (error)
