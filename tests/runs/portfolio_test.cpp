@@ -123,11 +123,16 @@ TEST(Portfolio, WhereTheRouteLeadsTheMixedPortfolioRunsRrtConnectOnEveryMember) 
   const Problem problem = test::detour_problem();
   CollisionChecker checker(problem.scene);
   MotionValidator(problem.space, checker);  // the distance grid, as a run builds it
-  EXPECT_TRUE(route_leads(problem, birrt_spec(1, 4, kMixedPortfolio), checker));
-  EXPECT_FALSE(route_leads(problem, birrt_spec(1, 4, kMixedPortfolio, 0.0), checker));
-  EXPECT_FALSE(route_leads(problem, birrt_spec(1, 4, "rrt"), checker));
+  const auto leads = [&](const RunSpec& spec) {
+    return route_leads(spec, run_route(problem, spec, checker).get());
+  };
+  EXPECT_TRUE(leads(birrt_spec(1, 4, kMixedPortfolio)));
+  EXPECT_FALSE(leads(birrt_spec(1, 4, kMixedPortfolio, 0.0)));
+  EXPECT_FALSE(leads(birrt_spec(1, 4, "rrt")));
+  EXPECT_FALSE(leads(birrt_spec(1, 4)));  // the route, but every member is RRT-Connect anyway
+  EXPECT_EQ(run_route(problem, birrt_spec(1, 4, "rrt"), checker), nullptr);
   std::set<unsigned> winners;
-  for (std::uint64_t seed : {1, 2, 3}) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
     const RunOutcome mixed = execute_run(problem, birrt_spec(seed, 4, kMixedPortfolio));
     const RunOutcome birrt = execute_run(problem, birrt_spec(seed, 4));
     winners.insert(birrt.member);

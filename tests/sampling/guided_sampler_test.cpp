@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "support/test_support.hpp"
@@ -212,6 +213,26 @@ TEST_F(GuidedSamplerTest, WhereThePartFitsTheRouteLengthwiseItGuidesFromTheFirst
         twisty.guide(), twisty_axis,
         draw(twisty, GuidedSampler::kGuideWarmup + static_cast<std::uint64_t>(i), rng));
   EXPECT_EQ(twisty_aligned, 0);
+}
+
+TEST_F(GuidedSamplerTest, GivenTheRunsRouteItDrawsWhatItWouldHaveFound) {
+  const auto route = std::make_shared<const WorkspaceRoute>(
+      workspace_route(problem_->space, *checker_, problem_->start.t, problem_->goal.t));
+  ASSERT_GE(route->points.size(), 3u);
+  EXPECT_FALSE(fits_lengthwise(*route));  // Twistycool's part turns to pass
+  GuidedSampler finds = sampler(0.75);
+  GuidedSampler given(problem_->space, *checker_, problem_->start, problem_->goal, 0.75, route);
+  Rng a(29);
+  Rng b(29);
+  for (std::uint64_t i = 0; i < GuidedSampler::kGuideWarmup + 300; ++i) {
+    const Config p = draw(finds, i, a);
+    const Config q = draw(given, i, b);
+    ASSERT_EQ(p.t, q.t) << i;
+    ASSERT_EQ(p.q.coeffs(), q.q.coeffs()) << i;
+  }
+  ASSERT_EQ(finds.guide().size(), given.guide().size());
+  for (std::size_t k = 0; k < given.guide().size(); ++k)
+    EXPECT_EQ(finds.guide()[k].point, route->points[k].point);
 }
 
 TEST_F(GuidedSamplerTest, TheCheckersBlocksAreThoseOfItsGridInsideTheSpacesBounds) {

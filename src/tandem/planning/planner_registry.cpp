@@ -21,7 +21,7 @@ std::unique_ptr<TargetSampler> sharing(const PlannerContext& c) {
 }
 
 std::unique_ptr<Planner> make_birrt(const PlannerContext& c) {
-  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, c.settings);
+  return std::make_unique<RRTConnect>(c.validator, c.start, c.goal, c.settings, nullptr, c.route);
 }
 std::unique_ptr<Planner> make_rrt(const PlannerContext& c) {
   return std::make_unique<RRT>(c.validator, c.start, c.goal, c.settings);
@@ -129,17 +129,21 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
                                       const Config& start, const Config& goal,
                                       const PlannerSettings& settings,
                                       const Interaction* interaction) {
+  return make_planner(name, {validator, start, goal, settings, interaction});
+}
+
+std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerContext& c) {
   const PlannerEntry* e = find_planner(name);
   if (e == nullptr)
     throw std::invalid_argument(unknown_planner(name));
-  const bool has_operator = interaction != nullptr && interaction->feed != nullptr;
+  const bool has_operator = c.interaction != nullptr && c.interaction->feed != nullptr;
   if (e->uses_operator && !has_operator)
     throw std::invalid_argument("planner '" + std::string(name) + "' needs an operator");
-  if (!e->uses_operator && interaction != nullptr) {
+  if (!e->uses_operator && c.interaction != nullptr) {
     throw std::invalid_argument("planner '" + std::string(name) +
                                 "' cannot use an operator (it plans alone)");
   }
-  return e->make({validator, start, goal, settings, interaction});
+  return e->make(c);
 }
 
 bool planner_uses(std::string_view name, const ParamSpec& spec) {

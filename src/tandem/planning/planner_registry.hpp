@@ -13,6 +13,7 @@
 
 #include "tandem/interaction/interaction.hpp"
 #include "tandem/planning/planner.hpp"
+#include "tandem/sampling/guided_sampler.hpp"
 
 namespace tandem {
 
@@ -28,6 +29,9 @@ struct PlannerContext {
   const PlannerSettings& settings;
   /// The operator; set exactly for the planners whose entry says uses_operator.
   const Interaction* interaction = nullptr;
+  /// The workspace route from start to goal, found once for a run (a portfolio's members share
+  /// it); null: a planner that follows it finds it.
+  std::shared_ptr<const WorkspaceRoute> route = nullptr;
 };
 
 struct PlannerEntry {
@@ -61,6 +65,8 @@ std::unique_ptr<Planner> make_planner(std::string_view name, MotionValidator& va
                                       const Config& start, const Config& goal,
                                       const PlannerSettings& settings,
                                       const Interaction* interaction = nullptr);
+/// The same, from everything a planner is made from.
+std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerContext& context);
 
 /// Whether planner `name` reads the tunable.
 bool planner_uses(std::string_view name, const ParamSpec& spec);

@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 #include "tandem/planning/extend.hpp"
 
 namespace tandem {
 
 RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Config& goal,
-                       const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler)
+                       const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler,
+                       std::shared_ptr<const WorkspaceRoute> route)
     : Planner(validator, start, goal, settings),
       start_tree_(validator.space(), settings.nearest_neighbors, start),
       goal_tree_(validator.space(), settings.nearest_neighbors, goal),
@@ -21,7 +23,7 @@ RRTConnect::RRTConnect(MotionValidator& validator, const Config& start, const Co
   // The computer alone: along the workspace guide for a share `guide`, else uniform samples.
   if (sampler_ == nullptr && settings.guide > 0.0) {
     auto guided = std::make_unique<GuidedSampler>(validator.space(), validator.checker(), start,
-                                                  goal, settings.guide);
+                                                  goal, settings.guide, std::move(route));
     guided_ = guided.get();
     sampler_ = std::move(guided);
   } else if (sampler_ == nullptr) {

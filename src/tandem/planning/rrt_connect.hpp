@@ -37,9 +37,11 @@ namespace tandem {
 
 class RRTConnect final : public Planner {
  public:
-  /// Without a sampler, uniform samples.
+  /// Without a sampler, the computer alone's: along the workspace guide (`route`, if given, else
+  /// found at the first iteration) for a share settings.guide, else uniform samples.
   RRTConnect(MotionValidator& validator, const Config& start, const Config& goal,
-             const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler = nullptr);
+             const PlannerSettings& settings, std::unique_ptr<TargetSampler> sampler = nullptr,
+             std::shared_ptr<const WorkspaceRoute> route = nullptr);
 
   std::string_view name() const override { return "rrt-connect"; }
   std::vector<const Tree*> trees() const override { return {&start_tree_, &goal_tree_}; }

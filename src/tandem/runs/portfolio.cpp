@@ -73,13 +73,17 @@ class Race {
 /// One search of the portfolio, with everything it owns.
 struct Member {
   Member(const Problem& problem, const RunSpec& spec, const CollisionChecker& shared,
-         unsigned index, bool route_led)
-      : name(member_planner(spec.mode, index, route_led)),
+         unsigned index, const std::shared_ptr<const WorkspaceRoute>& route)
+      : name(member_planner(spec.mode, index, route_leads(spec, route.get()))),
         checker(shared.clone()),
         validator(problem.space, checker) {
     PlannerSettings settings = spec.settings;
     settings.seed = member_seed(spec.settings.seed, index);
-    planner = make_planner(name, validator, problem.start, problem.goal, settings);
+    planner = make_planner(name, {.validator = validator,
+                                  .start = problem.start,
+                                  .goal = problem.goal,
+                                  .settings = settings,
+                                  .route = route});
   }
 
   std::string_view name;  ///< its planner
@@ -130,12 +134,16 @@ std::string_view member_planner(std::string_view mode, unsigned index, bool rout
   return mode;
 }
 
-bool route_leads(const Problem& problem, const RunSpec& spec, const CollisionChecker& checker) {
-  if (spec.mode != kMixedPortfolio || !(spec.settings.guide > 0.0))
-    return false;
-  const ObjectExtent extent = checker.object_extent();
-  return fits_lengthwise(
-      workspace_route(problem.space, checker, problem.start.t, problem.goal.t, extent), extent);
+std::shared_ptr<const WorkspaceRoute> run_route(const Problem& problem, const RunSpec& spec,
+                                                const CollisionChecker& checker) {
+  if (!(spec.settings.guide > 0.0) || spec.mode == "rrt")
+    return nullptr;
+  return std::make_shared<const WorkspaceRoute>(
+      workspace_route(problem.space, checker, problem.start.t, problem.goal.t));
+}
+
+bool route_leads(const RunSpec& spec, const WorkspaceRoute* route) {
+  return spec.mode == kMixedPortfolio && route != nullptr && fits_lengthwise(*route);
 }
 
 unsigned resolve_threads(const RunSpec& spec) {
@@ -149,10 +157,11 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   // The distance grid once, before the clones that share it (not timed, as for one thread).
   MotionValidator(problem.space, checker, validation_settings(spec.settings));
   const Stopwatch wall;
-  const bool route_led = route_leads(problem, spec, checker);
+  // Once for every member that follows it (each finding its own cost a route per member).
+  const std::shared_ptr<const WorkspaceRoute> route = run_route(problem, spec, checker);
   std::vector<std::unique_ptr<Member>> members;
   for (unsigned i = 0; i < threads; ++i)
-    members.push_back(std::make_unique<Member>(problem, spec, checker, i, route_led));
+    members.push_back(std::make_unique<Member>(problem, spec, checker, i, route));
 
   Race race;
   std::mutex error_mutex;

@@ -16,6 +16,7 @@
 // and under any load, unless the time limit ends the run first (as for one thread).
 
 #include <cstdint>
+#include <memory>
 #include <string_view>
 
 #include "tandem/collision/collision_checker.hpp"
@@ -29,9 +30,14 @@ namespace tandem {
 /// where the route leads (route_leads).
 std::string_view member_planner(std::string_view mode, unsigned index, bool route_led = false);
 
-/// Whether spec is the mixed portfolio with a workspace guide (settings.guide > 0) on a problem
-/// whose part fits the workspace route lengthwise (fits_lengthwise, guided_sampler.hpp).
-bool route_leads(const Problem& problem, const RunSpec& spec, const CollisionChecker& checker);
+/// The workspace route (sampling/guided_sampler.hpp) of a run whose RRT-Connect members follow
+/// one (settings.guide > 0, a mode other than "rrt"), found once for them all; null otherwise.
+std::shared_ptr<const WorkspaceRoute> run_route(const Problem& problem, const RunSpec& spec,
+                                                const CollisionChecker& checker);
+
+/// Whether spec is the mixed portfolio and its run's route (run_route) is one the part fits
+/// lengthwise (fits_lengthwise, guided_sampler.hpp).
+bool route_leads(const RunSpec& spec, const WorkspaceRoute* route);
 
 /// The seed of member `index`: the run's seed for member 0 (one thread is the plain run), then
 /// the run's seed generator's successive outputs.

@@ -4,60 +4,70 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace tandem {
 
 GuidedSampler::GuidedSampler(const SE3Space& space, const CollisionChecker& checker,
-                             const Config& start, const Config& goal, double share)
-    : space_(space), checker_(checker), start_(start.t), goal_(goal.t), share_(share) {}
+                             const Config& start, const Config& goal, double share,
+                             std::shared_ptr<const WorkspaceRoute> route)
+    : space_(space),
+      checker_(checker),
+      start_(start.t),
+      goal_(goal.t),
+      share_(share),
+      route_(std::move(route)) {}
 
-std::vector<GuidePoint> workspace_route(const SE3Space& space, const CollisionChecker& checker,
-                                        const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
-                                        const ObjectExtent& extent) {
+WorkspaceRoute workspace_route(const SE3Space& space, const CollisionChecker& checker,
+                               const Eigen::Vector3d& start, const Eigen::Vector3d& goal) {
+  WorkspaceRoute route{.points = {}, .extent = checker.object_extent()};
   const DistanceGrid* grid = checker.distance_grid();
   const GuideBlocks* blocks = checker.guide_blocks();
   if (grid == nullptr || blocks == nullptr || space.planar())
-    return {};
-  std::vector<GuidePoint> route =
-      find_guide(*grid, *blocks, start, goal, extent.half_extents.maxCoeff());
+    return route;
+  std::vector<GuidePoint>& points = route.points;
+  points = find_guide(*grid, *blocks, start, goal, route.extent.half_extents.maxCoeff());
   double length = 0.0;
-  for (std::size_t k = 1; k < route.size(); ++k)
-    length += (route[k].point - route[k - 1].point).norm();
-  if (route.size() < 2 || !(length > 0.0))
-    route.clear();
+  for (std::size_t k = 1; k < points.size(); ++k)
+    length += (points[k].point - points[k - 1].point).norm();
+  if (points.size() < 2 || !(length > 0.0))
+    points.clear();
   return route;
 }
 
-bool fits_lengthwise(const std::vector<GuidePoint>& route, const ObjectExtent& extent) {
-  if (route.empty())
+bool fits_lengthwise(const WorkspaceRoute& route) {
+  if (route.points.empty())
     return false;
   double narrowest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k + 1 < route.size(); ++k)
-    narrowest = std::min(narrowest, route[k].clearance);
-  return narrowest >= extent.half_extents(1);
+  for (std::size_t k = 1; k + 1 < route.points.size(); ++k)
+    narrowest = std::min(narrowest, route.points[k].clearance);
+  return narrowest >= route.extent.half_extents(1);
 }
 
 void GuidedSampler::find() {
-  const ObjectExtent extent = checker_.object_extent();
-  guide_ = workspace_route(space_, checker_, start_, goal_, extent);
-  long_axis_ = extent.axes.col(0);
-  least_spread_ = 0.1 * extent.half_extents.maxCoeff();
+  if (route_ == nullptr)
+    route_ =
+        std::make_shared<const WorkspaceRoute>(workspace_route(space_, checker_, start_, goal_));
+  found_ = true;
+  const std::vector<GuidePoint>& points = route_->points;
+  long_axis_ = route_->extent.axes.col(0);
+  least_spread_ = 0.1 * route_->extent.half_extents.maxCoeff();
   double s = 0.0;
-  for (std::size_t k = 0; k < guide_->size(); ++k) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
     if (k > 0)
-      s += ((*guide_)[k].point - (*guide_)[k - 1].point).norm();
+      s += (points[k].point - points[k - 1].point).norm();
     length_.push_back(s);
   }
-  covered_.assign(guide_->size(), false);
-  lengthwise_ = fits_lengthwise(*guide_, extent);
-  uncovered_ = guide_->size();
+  covered_.assign(points.size(), false);
+  lengthwise_ = fits_lengthwise(*route_);
+  uncovered_ = points.size();
 }
 
 void GuidedSampler::cover(const Eigen::Vector3d& p) {
   if (!covering())
     return;
-  for (std::size_t k = 0; k < guide_->size(); ++k) {
-    const GuidePoint& g = (*guide_)[k];
+  for (std::size_t k = 0; k < guide().size(); ++k) {
+    const GuidePoint& g = guide()[k];
     if (!covered_[k] && (g.point - p).norm() <= std::max(least_spread_, g.clearance)) {
       covered_[k] = true;
       --uncovered_;
@@ -67,10 +77,10 @@ void GuidedSampler::cover(const Eigen::Vector3d& p) {
 
 void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& out) {
   Rng& rng = *request.rng;
-  if (share_ > 0.0 && !guide_)
+  if (share_ > 0.0 && !found_)
     find();
-  started_ = started_ ||
-             (guide_ && !guide_->empty() && request.iteration >= (lengthwise_ ? 0 : kGuideWarmup));
+  started_ =
+      started_ || (!guide().empty() && request.iteration >= (lengthwise_ ? 0 : kGuideWarmup));
   Config q = space_.sample_uniform(rng);
   if (started_ && uncovered_ == 0 && retire_at_ == 0)
     retire_at_ = 2 * request.iteration;
@@ -81,7 +91,7 @@ void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& ou
 }
 
 void GuidedSampler::along(Rng& rng, Config& q) const {
-  const std::vector<GuidePoint>& g = *guide_;
+  const std::vector<GuidePoint>& g = route_->points;
   const double s = rng.uniform(0.0, length_.back());
   const std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
       std::upper_bound(length_.begin(), length_.end(), s) - length_.begin(), 1,

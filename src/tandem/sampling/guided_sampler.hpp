@@ -27,7 +27,7 @@
 // Determinism: every draw comes from the planner's sampling stream, in the planner's order.
 // Threading: sample() runs on the planner thread only.
 
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "tandem/collision/collision_checker.hpp"
@@ -36,23 +36,32 @@
 
 namespace tandem {
 
-/// The workspace guide from start to goal as GuidedSampler finds it: empty where there is none
-/// (no distance grid, a planar space, no route on the grid).
-std::vector<GuidePoint> workspace_route(const SE3Space& space, const CollisionChecker& checker,
-                                        const Eigen::Vector3d& start, const Eigen::Vector3d& goal,
-                                        const ObjectExtent& extent);
+/// The workspace guide from start to goal as GuidedSampler follows it, with the part's extent it
+/// was found for.
+struct WorkspaceRoute {
+  /// Empty where there is none (no distance grid, a planar space, no route on the grid).
+  std::vector<GuidePoint> points;
+  ObjectExtent extent;  ///< CollisionChecker::object_extent()
+};
+
+/// Finds the route (a fraction of a millisecond on the distance grid).
+WorkspaceRoute workspace_route(const SE3Space& space, const CollisionChecker& checker,
+                               const Eigen::Vector3d& start, const Eigen::Vector3d& goal);
 
 /// Whether the part fits the route lengthwise: the route's narrowest point, its ends aside, at
 /// least the part's second-largest half extent from the obstacles (false without a route).
-bool fits_lengthwise(const std::vector<GuidePoint>& route, const ObjectExtent& extent);
+bool fits_lengthwise(const WorkspaceRoute& route);
 
 class GuidedSampler final : public TargetSampler {
  public:
   /// Iterations with uniform samples only, where the route is too narrow for the part lengthwise.
   static constexpr std::uint64_t kGuideWarmup = 200;
 
+  /// `route`: workspace_route(start, goal) found once for the run (a portfolio's members share
+  /// one); null: found at the first sample.
   GuidedSampler(const SE3Space& space, const CollisionChecker& checker, const Config& start,
-                const Config& goal, double share);
+                const Config& goal, double share,
+                std::shared_ptr<const WorkspaceRoute> route = nullptr);
   void sample(const SampleRequest& request, std::vector<Target>& out) override;
 
   /// Step 3: a node of either tree at p covers the guide's points within their spread of it.
@@ -61,11 +70,12 @@ class GuidedSampler final : public TargetSampler {
   bool covering() const { return started_ && uncovered_ > 0; }
 
   /// The guide, once found (empty when there is none).
-  const std::vector<GuidePoint>& guide() const { return guide_ ? *guide_ : kNoGuide; }
+  const std::vector<GuidePoint>& guide() const { return found_ ? route_->points : kNoGuide; }
 
  private:
   inline static const std::vector<GuidePoint> kNoGuide;
 
+  /// The route, if not given, and what follows from it (lengths, long axis, spreads).
   void find();
   /// Step 1's configuration, s along the guide's length (q.q untouched unless it is turned along
   /// the route).
@@ -77,8 +87,9 @@ class GuidedSampler final : public TargetSampler {
   Eigen::Vector3d goal_;
   double share_;
   double least_spread_ = 0.0;
-  std::optional<std::vector<GuidePoint>> guide_;
-  bool lengthwise_ = false;                               ///< fits_lengthwise(guide), once found
+  std::shared_ptr<const WorkspaceRoute> route_;
+  bool found_ = false;                                    ///< find() has run
+  bool lengthwise_ = false;                               ///< fits_lengthwise(*route_), once found
   Eigen::Vector3d long_axis_ = Eigen::Vector3d::UnitX();  ///< the part's, in its frame
   bool started_ = false;        ///< guiding (or retired): its first iteration has come
   std::vector<double> length_;  ///< the guide's length up to each point
