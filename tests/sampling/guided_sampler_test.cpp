@@ -215,6 +215,41 @@ TEST_F(GuidedSamplerTest, WhereThePartFitsTheRouteLengthwiseItGuidesFromTheFirst
   EXPECT_EQ(twisty_aligned, 0);
 }
 
+TEST_F(GuidedSamplerTest, WhereThePartFitsTheRouteLengthwiseItDrawsAlongTheGapTheTreesLeave) {
+  const Problem easy =
+      load_ompl_app_problem(test::shared_dir() / "benchmarks" / "omplapp" / "3D" / "Easy.cfg");
+  CollisionChecker checker(easy.scene);
+  MotionValidator(easy.space, checker, {MotionValidation::exact, 0.0, true});
+  GuidedSampler covered(easy.space, checker, easy.start, easy.goal, 1.0);
+  GuidedSampler fresh(easy.space, checker, easy.start, easy.goal, 1.0);
+  Rng rng(31);
+  draw(covered, 0, rng);
+  draw(fresh, 0, rng);
+  const std::vector<GuidePoint>& g = covered.guide();
+  ASSERT_GE(g.size(), 8u);
+  // Nodes on the first half of the guide: the trees have covered it.
+  const std::size_t half = g.size() / 2;
+  for (std::size_t k = 0; k < half; ++k)
+    covered.cover(g[k].point);
+  ASSERT_TRUE(covered.covering());
+  const auto nearest_point = [&](const Eigen::Vector3d& p) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < g.size(); ++k)
+      best = (g[k].point - p).norm() < (g[best].point - p).norm() ? k : best;
+    return best;
+  };
+  // Samples nearest a point well inside the covered half: only the Gaussian's spill-over once the
+  // trees cover it, a share like its share of the length before.
+  const int n = 400;
+  int behind = 0, behind_before = 0;
+  for (int i = 1; i <= n; ++i) {
+    behind += nearest_point(draw(covered, static_cast<std::uint64_t>(i), rng).t) + 2 < half;
+    behind_before += nearest_point(draw(fresh, static_cast<std::uint64_t>(i), rng).t) + 2 < half;
+  }
+  EXPECT_LT(behind, n / 10);
+  EXPECT_GT(behind_before, n / 5);
+}
+
 TEST_F(GuidedSamplerTest, GivenTheRunsRouteItDrawsWhatItWouldHaveFound) {
   const auto route = std::make_shared<const WorkspaceRoute>(
       workspace_route(problem_->space, *checker_, problem_->start.t, problem_->goal.t));

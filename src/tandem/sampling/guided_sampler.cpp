@@ -61,11 +61,21 @@ void GuidedSampler::find() {
   covered_.assign(points.size(), false);
   lengthwise_ = fits_lengthwise(*route_);
   uncovered_ = points.size();
+  measure_open();
+}
+
+void GuidedSampler::measure_open() {
+  open_length_.assign(length_.size(), 0.0);
+  for (std::size_t k = 1; k < length_.size(); ++k) {
+    const bool open = !covered_[k - 1] || !covered_[k];
+    open_length_[k] = open_length_[k - 1] + (open ? length_[k] - length_[k - 1] : 0.0);
+  }
 }
 
 void GuidedSampler::cover(const Eigen::Vector3d& p) {
   if (!covering())
     return;
+  const std::size_t before = uncovered_;
   for (std::size_t k = 0; k < guide().size(); ++k) {
     const GuidePoint& g = guide()[k];
     if (!covered_[k] && (g.point - p).norm() <= std::max(least_spread_, g.clearance)) {
@@ -73,6 +83,8 @@ void GuidedSampler::cover(const Eigen::Vector3d& p) {
       --uncovered_;
     }
   }
+  if (lengthwise_ && uncovered_ != before)
+    measure_open();
 }
 
 void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& out) {
@@ -92,12 +104,14 @@ void GuidedSampler::sample(const SampleRequest& request, std::vector<Target>& ou
 
 void GuidedSampler::along(Rng& rng, Config& q) const {
   const std::vector<GuidePoint>& g = route_->points;
-  const double s = rng.uniform(0.0, length_.back());
-  const std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
-      std::upper_bound(length_.begin(), length_.end(), s) - length_.begin(), 1,
-      static_cast<std::ptrdiff_t>(g.size()) - 1));
-  const double span = length_[k] - length_[k - 1];
-  const double u = span > 0.0 ? (s - length_[k - 1]) / span : 0.0;
+  // By length along the whole guide, or, where the part fits it lengthwise, along its open part.
+  const std::vector<double>& by = lengthwise_ && uncovered_ > 0 ? open_length_ : length_;
+  const double s = rng.uniform(0.0, by.back());
+  const std::size_t k = static_cast<std::size_t>(
+      std::clamp<std::ptrdiff_t>(std::upper_bound(by.begin(), by.end(), s) - by.begin(), 1,
+                                 static_cast<std::ptrdiff_t>(g.size()) - 1));
+  const double span = by[k] - by[k - 1];
+  const double u = span > 0.0 ? (s - by[k - 1]) / span : 0.0;
   const Eigen::Vector3d p = g[k - 1].point + u * (g[k].point - g[k - 1].point);
   const double spread =
       std::max(least_spread_, g[k - 1].clearance + u * (g[k].clearance - g[k - 1].clearance));

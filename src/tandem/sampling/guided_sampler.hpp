@@ -3,7 +3,8 @@
 // (collision/workspace_guide.hpp): a route of the part's reference point from the start to the
 // goal through the workspace's free space, found on the distance grid.
 //
-// The guide is found at the first iteration (a fraction of a millisecond). Where the route is
+// The guide is found at the first iteration (a fraction of a millisecond), or given, found once
+// for a run (runs/portfolio.cpp). Where the route is
 // open enough for the part lengthwise (its narrowest point, the ends aside, at least the part's
 // second-largest half extent from the obstacles: with its longest axis along the route, the part
 // roughly fits), the route is a strong hint and guides from the first iteration; elsewhere
@@ -11,9 +12,12 @@
 // for kGuideWarmup iterations, measured to pay there (README). Then, each iteration:
 //   1. with probability `share`, a point drawn uniformly along the guide (by length), moved by a
 //      Gaussian of the guide's clearance there (at least a tenth of the part's longest half
-//      extent) and kept in the bounds, is the sample's position; its orientation is uniform, or,
-//      where the part fits the route lengthwise, for half of these samples the part's longest
-//      axis lies along the route there (either way along it, turned about it uniformly);
+//      extent) and kept in the bounds, is the sample's position; its orientation is uniform.
+//      Where the part fits the route lengthwise: the point is drawn along the guide's open part
+//      only (the segments with an end not yet covered, step 3), the gap the trees have still to
+//      close, while there is one (cubicles 41 -> 23 ms, bugtrap within noise; README); and for
+//      half of these samples the part's longest axis lies along the route there (either way
+//      along it, turned about it uniformly);
 //   2. otherwise a uniform sample, as without a guide;
 //   3. once the trees' nodes have covered every point of the guide (a node within the point's
 //      spread), at iteration i, the guide has little more to say: the trees have reached each
@@ -77,6 +81,8 @@ class GuidedSampler final : public TargetSampler {
 
   /// The route, if not given, and what follows from it (lengths, long axis, spreads).
   void find();
+  /// open_length_ from covered_.
+  void measure_open();
   /// Step 1's configuration, s along the guide's length (q.q untouched unless it is turned along
   /// the route).
   void along(Rng& rng, Config& q) const;
@@ -93,6 +99,8 @@ class GuidedSampler final : public TargetSampler {
   Eigen::Vector3d long_axis_ = Eigen::Vector3d::UnitX();  ///< the part's, in its frame
   bool started_ = false;        ///< guiding (or retired): its first iteration has come
   std::vector<double> length_;  ///< the guide's length up to each point
+  /// The length of the guide's open segments (an end not covered) up to each point.
+  std::vector<double> open_length_;
   std::vector<bool> covered_;
   std::size_t uncovered_ = 0;
   std::uint64_t retire_at_ = 0;  ///< step 3's 2i (0 until every point is covered)
