@@ -115,13 +115,16 @@ void GuidedSampler::along(Rng& rng, Config& q) const {
   const Eigen::Vector3d p = g[k - 1].point + u * (g[k].point - g[k - 1].point);
   const double spread =
       std::max(least_spread_, g[k - 1].clearance + u * (g[k].clearance - g[k - 1].clearance));
+  // A sample turned along the route lies near its centreline, where the part fits lengthwise.
+  const bool turned = lengthwise_ && span > 0.0 && rng.uniform01() < 0.5;
+  const double sigma = turned ? kTurnedSpread * spread : spread;
   const Eigen::Vector3d moved =
-      p + spread * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian());
+      p + sigma * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian());
   const Bounds& b = space_.bounds();
   q.t = moved.cwiseMax(b.min).cwiseMin(b.max);
-  const Eigen::Vector3d along_route = g[k].point - g[k - 1].point;
-  if (!lengthwise_ || !(span > 0.0) || rng.uniform01() >= 0.5)
+  if (!turned)
     return;
+  const Eigen::Vector3d along_route = g[k].point - g[k - 1].point;
   const Eigen::Vector3d axis = (rng.uniform01() < 0.5 ? 1.0 : -1.0) * along_route.normalized();
   q.q = Eigen::AngleAxisd(rng.uniform(-M_PI, M_PI), axis) *
         Eigen::Quaterniond::FromTwoVectors(long_axis_, axis);

@@ -17,7 +17,8 @@
 //      only (the segments with an end not yet covered, step 3), the gap the trees have still to
 //      close, while there is one (cubicles 41 -> 23 ms, bugtrap within noise; README); and for
 //      half of these samples the part's longest axis lies along the route there (either way
-//      along it, turned about it uniformly);
+//      along it, turned about it uniformly), with the point near the route's centreline: its
+//      Gaussian a tenth as wide (Easy 3.0 -> 1.3 ms, cubicles 23 -> 18.5 ms; README);
 //   2. otherwise a uniform sample, as without a guide;
 //   3. once the trees' nodes have covered every point of the guide (a node within the point's
 //      spread), at iteration i, the guide has little more to say: the trees have reached each
@@ -60,6 +61,8 @@ class GuidedSampler final : public TargetSampler {
  public:
   /// Iterations with uniform samples only, where the route is too narrow for the part lengthwise.
   static constexpr std::uint64_t kGuideWarmup = 200;
+  /// The Gaussian's width for a sample turned along the route, as a share of the guide's spread.
+  static constexpr double kTurnedSpread = 0.1;
 
   /// `route`: workspace_route(start, goal) found once for the run (a portfolio's members share
   /// one); null: found at the first sample.
