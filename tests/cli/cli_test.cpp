@@ -408,7 +408,11 @@ TEST(Cli, FuzzFoundInputsAreBadInput) {
   TempDir dir;
   const auto iges = (dir.path() / "refused.igs").string();
   std::filesystem::copy_file(regression / "step" / "iges-refused-leak", iges);
-  expect_bad_input({"parts", iges}, {iges, "malformed or not IGES"});
+  expect_bad_input({"parts", iges}, {iges, "not an IGES file in ASCII form"});
+  // Binary bytes between a start and a terminate record crashed OCCT's IGES reader.
+  const auto binary = (dir.path() / "binary.igs").string();
+  std::filesystem::copy_file(regression / "step" / "iges-binary-records-crash-occt", binary);
+  expect_bad_input({"parts", binary}, {binary, "not an IGES file in ASCII form"});
 }
 
 TEST(Cli, BuiltinScenesCanBeListedAndExported) {

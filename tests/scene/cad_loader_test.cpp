@@ -175,6 +175,33 @@ TEST_F(CadLoaderTest, RejectsBadFilesWithOneClearError) {
   const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   expect_rejected(dir.write("cut.step", whole.substr(0, whole.size() / 2)), "truncated");
   expect_rejected(dir.write("text.igs", "hello\n"), "not an IGES file");
+  // An IGES file whose records break the form: each refused before OCCT reads it (its reader
+  // crashed on such a file), while the file as written reads.
+  test::write_housing(dir.path() / "good.igs", CadFormat::iges);
+  std::ifstream good(dir.path() / "good.igs");
+  std::vector<std::string> records;
+  for (std::string line; std::getline(good, line);)
+    records.push_back(line);
+  ASSERT_GT(records.size(), 6u);
+  const auto joined = [](const std::vector<std::string>& r) {
+    std::string text;
+    for (const auto& line : r)
+      text += line + "\n";
+    return text;
+  };
+  EXPECT_NO_THROW(load_cad(dir.write("same.igs", joined(records))));
+  std::vector<std::string> binary = records;
+  binary[2][10] = '\x8b';
+  expect_rejected(dir.write("binary.igs", joined(binary)), "record 3 has a character");
+  std::vector<std::string> order = records;
+  std::swap(order[1], order[order.size() - 2]);  // a parameter record before the global section
+  expect_rejected(dir.write("order.igs", joined(order)), "in the sections' order");
+  std::vector<std::string> global;
+  for (const auto& line : records) {
+    if (line.size() < 73 || line[72] != 'G')
+      global.push_back(line);
+  }
+  expect_rejected(dir.write("global.igs", joined(global)), "no global section");
   test::write_empty_step(dir.path() / "nothing.step");
   expect_rejected(dir.path() / "nothing.step", "no geometry");
   expect_rejected(dir.write("part.stl", "solid t\nendsolid t\n"), "not a STEP or IGES");

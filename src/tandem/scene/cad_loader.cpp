@@ -24,11 +24,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <gp_Quaternion.hxx>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <set>
+#include <string_view>
 
 #include "tandem/core/error.hpp"
 #include "tandem/core/text.hpp"
@@ -39,6 +41,41 @@ namespace {
 bool is_step(const std::filesystem::path& file) {
   const std::string ext = lower_extension(file);
   return ext == ".step" || ext == ".stp";
+}
+
+/// Every record of an IGES file (ASCII form): printable ASCII, its section letter in column 73,
+/// the sections in their order (start, global, directory entry, parameter data, terminate), one
+/// terminate record, last. OCCT's IGES reader (a C parser) crashes on some files that are not
+/// so (fuzzing: binary bytes between a start and a terminate record), so none reaches it.
+void check_iges_records(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  constexpr std::string_view kSections = "SGDPT";
+  std::size_t section = 0;
+  std::size_t count[5] = {};
+  std::string line;
+  for (std::size_t n = 1; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos && count[4] > 0)
+      continue;  // blank lines after the terminate record
+    const auto bad = [&](const std::string& what) {
+      throw InputError(file.string(), "not an IGES file in ASCII form (record " +
+                                          std::to_string(n) + " " + what + ")");
+    };
+    if (line.size() < 73 || line.size() > 80)
+      bad("is not 73 to 80 columns long");
+    for (const char c : line) {
+      if (c < ' ' || c > '~')
+        bad("has a character that is not printable ASCII");
+    }
+    const std::size_t at = kSections.find(line[72]);
+    if (at == std::string_view::npos || at < section || count[4] > 0)
+      bad("has no section letter S, G, D, P or T in column 73 in the sections' order");
+    section = at;
+    ++count[at];
+  }
+  if (count[1] == 0)
+    throw InputError(file.string(), "not an IGES file (it has no global section)");
 }
 
 /// The file's own framing, checked before OCCT reads it: OCCT reads what it can of a truncated
@@ -66,6 +103,7 @@ void check_framing(const std::filesystem::path& file) {
     throw InputError(file.string(), "not an IGES file (its first record is no start record)");
   if (last.size() < 73 || last[72] != 'T')
     throw InputError(file.string(), "truncated IGES file (its last record is no terminate record)");
+  check_iges_records(file);
 }
 
 /// OCCT reports through its default messenger on stdout; tandem's output stays its own.
