@@ -102,6 +102,9 @@ TEST(MeshLoader, RefusesPlyFilesAssimpCannotRead) {
                   "malformed PLY header line 'element vertex'");
   expect_rejected(dir.write("e.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"),
                   "no 'end_header'");
+  // A name run into digits: assimp read it as a count of billions (22 GB; a cfg fuzz finding).
+  expect_rejected(dir.write("n.ply", "ply\nformat ascii 1.0\nelement 8888vertex 4\nend_header\n"),
+                  "malformed PLY header line 'element 8888vertex 4'");
   const std::string faces =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
