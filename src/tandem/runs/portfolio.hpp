@@ -3,7 +3,8 @@
 // portfolios", AI 2001). A sampling planner's run time is heavy-tailed — a few seeds take many
 // times the median — so the first of k independent runs to finish is far sooner than one run,
 // more than k times sooner in the tail. Member i runs the spec's planner with seed
-// member_seed(seed, i), on its own thread, with its own clone of the collision checker. For
+// member_seed(seed, i), on its own thread (member 0 on the caller's), with its own clone of the
+// collision checker; the members share one workspace route, found once (run_route). For
 // "birrt+rrt": RRT-Connect on even members and goal-biased RRT on odd ones, which are fast where
 // the other is slow (the alpha puzzle, whose difficulty is the part's orientation); but where the
 // part fits the workspace route lengthwise (sampling/guided_sampler.hpp), the route leads
