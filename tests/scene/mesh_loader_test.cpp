@@ -78,6 +78,19 @@ TEST(MeshLoader, RejectsMissingFilesAndOtherFormats) {
   expect_rejected(dir.path(), "unsupported mesh format");
 }
 
+// A NUL byte ends the name the file system sees: "robot.ply\0.dae" would be checked as Collada
+// and read by assimp as robot.ply (a fuzzing finding that hung assimp's PLY reader).
+TEST(MeshLoader, RefusesAFileNameWithANulByte) {
+  TempDir dir;
+  const std::filesystem::path ply = dir.write("robot.ply", "ply\nformat ascii 1.0\nelement vertex");
+  try {
+    load_mesh(ply.string() + std::string(1, '\0') + ".dae");
+    FAIL() << "accepted a name with a NUL byte";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(ply.string() + "\\0...: the file name holds a NUL byte"));
+  }
+}
+
 TEST(MeshLoader, RejectsMalformedFiles) {
   TempDir dir;
   expect_rejected(dir.write("garbage.dae", "<COLLADA><this is not xml"), "cannot read mesh");
