@@ -51,12 +51,13 @@ void check_iges_records(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   constexpr std::string_view kSections = "SGDPT";
   std::size_t section = 0;
-  std::size_t count[5] = {};
+  bool global = false;      // a global record was read
+  bool terminated = false;  // the terminate record was read: only blank lines may follow
   std::string line;
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r')
       line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos && count[4] > 0)
+    if (line.find_first_not_of(" \t") == std::string::npos && terminated)
       continue;  // blank lines after the terminate record
     const auto bad = [&](const std::string& what) {
       throw InputError(file.string(), "not an IGES file in ASCII form (record " +
@@ -69,12 +70,13 @@ void check_iges_records(const std::filesystem::path& file) {
         bad("has a character that is not printable ASCII");
     }
     const std::size_t at = kSections.find(line[72]);
-    if (at == std::string_view::npos || at < section || count[4] > 0)
+    if (at == std::string_view::npos || at < section || terminated)
       bad("has no section letter S, G, D, P or T in column 73 in the sections' order");
     section = at;
-    ++count[at];
+    global = global || at == 1;
+    terminated = at == 4;
   }
-  if (count[1] == 0)
+  if (!global)
     throw InputError(file.string(), "not an IGES file (it has no global section)");
 }
 
