@@ -205,6 +205,11 @@ TEST_F(CadLoaderTest, RejectsBadFilesWithOneClearError) {
   test::write_empty_step(dir.path() / "nothing.step");
   expect_rejected(dir.path() / "nothing.step", "no geometry");
   expect_rejected(dir.write("part.stl", "solid t\nendsolid t\n"), "not a STEP or IGES");
+  // Read only up to the NUL byte, "part.stl\0.step" would have OCCT read part.stl.
+  EXPECT_THAT(test::error_message<InputError>(
+                  [&] { load_cad((dir.path() / "part.stl").string() + '\0' + ".step"); }),
+              HasSubstr("the file name '" + (dir.path() / "part.stl").string() +
+                        "\\0...' holds a NUL byte"));
   const std::string e = test::error_message<InputError>([&] {
     load_cad(dir_->path() / "housing.step", {-1.0, 0.5});
   });

@@ -87,7 +87,7 @@ TEST(MeshLoader, RefusesAFileNameWithANulByte) {
     load_mesh(ply.string() + std::string(1, '\0') + ".dae");
     FAIL() << "accepted a name with a NUL byte";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr(ply.string() + "\\0...: the file name holds a NUL byte"));
+    EXPECT_THAT(e.what(), HasSubstr("the file name '" + ply.string() + "\\0...' holds a NUL byte"));
   }
 }
 

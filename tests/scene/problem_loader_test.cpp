@@ -21,5 +21,15 @@ TEST(ProblemLoader, NamesTheBuiltinScenesWhenNothingMatches) {
   }
 }
 
+// A name read only up to its NUL byte: "x.cfg\0.toml" would be read as a scenario from x.cfg.
+TEST(ProblemLoader, RefusesANameWithANulByte) {
+  try {
+    load_problem(std::string("x.cfg") + '\0' + ".toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("the file name 'x.cfg\\0...' holds a NUL byte"));
+  }
+}
+
 }  // namespace
 }  // namespace tandem

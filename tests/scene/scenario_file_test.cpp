@@ -206,7 +206,7 @@ TEST(ScenarioFile, ReportsFilesItCannotUse) {
   EXPECT_THAT(s.error("mesh = \"tet.obj\"", "mesh = \"/etc/passwd.stl\""),
               HasSubstr("outside the folders"));
   EXPECT_THAT(s.error("mesh = \"tet.obj\"", "mesh = \"tet.obj\\u0000.stl\""),
-              HasSubstr("the file name 'tet.obj...' holds a NUL byte"));
+              HasSubstr("the file name 'tet.obj\\0...' holds a NUL byte"));
   s.dir.write("bad.urdf", "<robot");
   EXPECT_THAT(s.error("urdf = \"fixture.urdf\"", "urdf = \"bad.urdf\""),
               HasSubstr("not a valid URDF"));

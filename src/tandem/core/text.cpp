@@ -86,6 +86,13 @@ FileEnds read_file_ends(const std::filesystem::path& file, std::size_t bytes) {
   return ends;
 }
 
+void check_file_name(const std::string& name, const std::string& source) {
+  const std::size_t nul = name.find('\0');
+  if (nul == std::string::npos)
+    return;
+  throw InputError(source, "the file name '" + name.substr(0, nul) + "\\0...' holds a NUL byte");
+}
+
 std::string lower_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),

@@ -31,6 +31,13 @@ struct FileEnds {
 };
 FileEnds read_file_ends(const std::filesystem::path& file, std::size_t bytes);
 
+/// Throws InputError when a file name holds a NUL byte. The file system sees the name only up to
+/// it, so what tandem checks of the whole name (its extension: which reader, which checks) would
+/// not hold for the file opened (fuzzing: "a.ply\0.dae" was checked as COLLADA and read by
+/// assimp's PLY reader, which hung). `source` names where the name was given; empty, the error
+/// names the file alone.
+void check_file_name(const std::string& name, const std::string& source = {});
+
 /// The file name's extension, with its dot, in lower case ("part.STL" -> ".stl").
 std::string lower_extension(const std::filesystem::path& file);
 

@@ -302,6 +302,7 @@ bool is_cad_file(const std::filesystem::path& file) {
 }
 
 CadAssembly load_cad(const std::filesystem::path& file, const CadOptions& options) {
+  check_file_name(file.string());
   if (!is_cad_file(file))
     throw InputError(file.string(), "not a STEP or IGES file name (.step, .stp, .iges, .igs)");
   if (!(options.linear_deflection >= 0.0) || !(options.angular_deflection > 0.0) ||

@@ -1,6 +1,7 @@
 #include "tandem/scene/file_refs.hpp"
 
 #include "tandem/core/error.hpp"
+#include "tandem/core/text.hpp"
 
 namespace tandem {
 namespace {
@@ -25,9 +26,7 @@ std::filesystem::path resolve_reference(const std::string& reference,
   const std::string source = referrer.string();
   if (reference.empty())
     throw InputError(source, "empty file name");
-  if (reference.find('\0') != std::string::npos)
-    throw InputError(source, "the file name '" + reference.substr(0, reference.find('\0')) +
-                                 "...' holds a NUL byte");
+  check_file_name(reference, source);
   std::string name = reference;
   const auto scheme = name.find("://");
   if (scheme != std::string::npos) {

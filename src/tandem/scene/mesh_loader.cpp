@@ -81,11 +81,7 @@ bool is_supported_mesh_file(const std::filesystem::path& file) {
 
 LoadedMesh load_mesh(const std::filesystem::path& file) {
   const std::string name = file.string();
-  // The format is chosen from the whole name, the file opened by its C string: with a NUL byte,
-  // assimp would read another file than the one checked. Found by fuzzing: a PLY named
-  // "a.ply\0.dae" passed the Collada checks, and assimp's PLY reader had not ended after 90 s.
-  if (const auto nul = name.find('\0'); nul != std::string::npos)
-    throw InputError(name.substr(0, nul) + "\\0...", "the file name holds a NUL byte");
+  check_file_name(name);
   if (!is_supported_mesh_file(file)) {
     throw InputError(name, "unsupported mesh format '" + file.extension().string() +
                                "' (tandem reads .dae, .stl, .obj and .ply)");

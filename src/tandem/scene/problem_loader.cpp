@@ -11,6 +11,7 @@
 namespace tandem {
 
 Problem load_problem(const std::string& spec, const ProblemLoadOptions& options) {
+  check_file_name(spec);
   std::error_code ec;
   const std::filesystem::path path(spec);
   if (std::filesystem::exists(path, ec)) {
