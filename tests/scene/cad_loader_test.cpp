@@ -202,6 +202,15 @@ TEST_F(CadLoaderTest, RejectsBadFilesWithOneClearError) {
       global.push_back(line);
   }
   expect_rejected(dir.write("global.igs", joined(global)), "no global section");
+  // Its ends: a start record first, a terminate record last, as a cut file has not.
+  const std::string text = joined(records);
+  expect_rejected(dir.write("cut.igs", text.substr(0, text.size() / 2)), "truncated IGES file");
+  expect_rejected(dir.write("cut-record.igs", text.substr(0, text.size() - 20)),
+                  "truncated IGES file");
+  expect_rejected(dir.write("headless.igs", joined({records.begin() + 1, records.end()})),
+                  "its first record is no start record");
+  expect_rejected(dir.write("lead.igs", "\n" + text), "its first record is no start record");
+  expect_rejected(dir.write("blank.igs", "  \n\n"), "the file is empty");
   test::write_empty_step(dir.path() / "nothing.step");
   expect_rejected(dir.path() / "nothing.step", "no geometry");
   expect_rejected(dir.write("part.stl", "solid t\nendsolid t\n"), "not a STEP or IGES");

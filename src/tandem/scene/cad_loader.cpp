@@ -43,26 +43,39 @@ bool is_step(const std::filesystem::path& file) {
   return ext == ".step" || ext == ".stp";
 }
 
-/// Every record of an IGES file (ASCII form): printable ASCII, its section letter in column 73,
-/// the sections in their order (start, global, directory entry, parameter data, terminate), one
-/// terminate record, last. OCCT's IGES reader (a C parser) crashes on some files that are not
-/// so (fuzzing: binary bytes between a start and a terminate record), so none reaches it.
+/// Every record of an IGES file (ASCII form): printable ASCII, 73 to 80 columns, its section
+/// letter in column 73, the sections in their order (start, global, directory entry, parameter
+/// data, terminate), the first a start record and the last the one terminate record (blank lines
+/// may follow it). OCCT reads what it can of a truncated file without complaint, and its IGES
+/// reader (a C parser) crashes on some files that are not so (fuzzing: binary bytes between a
+/// start and a terminate record), so none reaches it.
 void check_iges_records(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   constexpr std::string_view kSections = "SGDPT";
   std::size_t section = 0;
   bool global = false;      // a global record was read
   bool terminated = false;  // the terminate record was read: only blank lines may follow
+  bool blank_only = true;   // no line but blank ones so far
+  const auto truncated = [&] {
+    return InputError(file.string(),
+                      "truncated IGES file (its last record is no terminate record)");
+  };
   std::string line;
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r')
       line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos && terminated)
-      continue;  // blank lines after the terminate record
+    const bool blank = line.find_first_not_of(" \t") == std::string::npos;
+    if (blank && (terminated || blank_only))
+      continue;  // blank lines after the terminate record, or (refused next) before any record
     const auto bad = [&](const std::string& what) {
+      if (in.peek() == EOF && !terminated)
+        throw truncated();  // a record cut short at the file's end
       throw InputError(file.string(), "not an IGES file in ASCII form (record " +
                                           std::to_string(n) + " " + what + ")");
     };
+    if (blank_only && (n != 1 || line.size() < 73 || line[72] != 'S'))
+      throw InputError(file.string(), "not an IGES file (its first record is no start record)");
+    blank_only = false;
     if (line.size() < 73 || line.size() > 80)
       bad("is not 73 to 80 columns long");
     for (const char c : line) {
@@ -76,36 +89,30 @@ void check_iges_records(const std::filesystem::path& file) {
     global = global || at == 1;
     terminated = at == 4;
   }
+  if (blank_only)
+    throw InputError(file.string(), "the file is empty");
+  if (!terminated)
+    throw truncated();
   if (!global)
     throw InputError(file.string(), "not an IGES file (it has no global section)");
 }
 
-/// The file's own framing, checked before OCCT reads it: OCCT reads what it can of a truncated
-/// file without complaint. A STEP file opens with ISO-10303-21; and closes with END-ISO-10303-21;
-/// (ISO 10303-21); an IGES file's last record is its terminate section (T in column 73). Only the
-/// file's ends are read (OCCT reads the whole of it next).
+/// The file's own framing, checked before OCCT reads it. A STEP file opens with ISO-10303-21; and
+/// closes with END-ISO-10303-21; (ISO 10303-21): only its ends are read (OCCT reads the whole of
+/// it next), since OCCT reads what it can of a truncated file without complaint. An IGES file's
+/// every record is checked (check_iges_records).
 void check_framing(const std::filesystem::path& file) {
+  if (!is_step(file))
+    return check_iges_records(file);
   const FileEnds ends = read_file_ends(file, 4096);
   const std::string head = trim(ends.head), tail = trim(ends.tail);
   if (head.empty() && tail.empty())
     throw InputError(file.string(), "the file is empty");
-  if (is_step(file)) {
-    if (head.rfind("ISO-10303-21;", 0) != 0)
-      throw InputError(file.string(), "not a STEP file (it does not begin with ISO-10303-21;)");
-    const std::string end = "END-ISO-10303-21;";
-    if (tail.size() < end.size() || tail.substr(tail.size() - end.size()) != end)
-      throw InputError(file.string(), "truncated STEP file (no END-ISO-10303-21; at its end)");
-    return;
-  }
-  // IGES records are 80 columns, the section letter in column 73; leading blanks count.
-  std::string last = ends.tail.substr(0, ends.tail.find_last_not_of(" \t\r\n") + 1);
-  last = last.substr(last.find_last_of('\n') + 1);
-  const std::string first = ends.head.substr(0, ends.head.find_first_of("\r\n"));
-  if (first.size() < 73 || first[72] != 'S')
-    throw InputError(file.string(), "not an IGES file (its first record is no start record)");
-  if (last.size() < 73 || last[72] != 'T')
-    throw InputError(file.string(), "truncated IGES file (its last record is no terminate record)");
-  check_iges_records(file);
+  if (head.rfind("ISO-10303-21;", 0) != 0)
+    throw InputError(file.string(), "not a STEP file (it does not begin with ISO-10303-21;)");
+  const std::string end = "END-ISO-10303-21;";
+  if (tail.size() < end.size() || tail.substr(tail.size() - end.size()) != end)
+    throw InputError(file.string(), "truncated STEP file (no END-ISO-10303-21; at its end)");
 }
 
 /// OCCT reports through its default messenger on stdout; tandem's output stays its own.
