@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
 
 namespace tandem {
@@ -23,12 +24,9 @@ TEST(ProblemLoader, NamesTheBuiltinScenesWhenNothingMatches) {
 
 // A name read only up to its NUL byte: "x.cfg\0.toml" would be read as a scenario from x.cfg.
 TEST(ProblemLoader, RefusesANameWithANulByte) {
-  try {
-    load_problem(std::string("x.cfg") + '\0' + ".toml");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("the file name 'x.cfg\\0...' holds a NUL byte"));
-  }
+  EXPECT_THAT(
+      test::error_message<InputError>([] { load_problem(std::string("x.cfg") + '\0' + ".toml"); }),
+      ::testing::HasSubstr("the file name 'x.cfg\\0...' holds a NUL byte"));
 }
 
 }  // namespace
