@@ -168,6 +168,14 @@ TEST(OmplAppProblem, ReportsMalformedFiles) {
   EXPECT_THAT(
       error_of(dir.write("e.cfg", "[problem]\nrobot = nothere.dae\nworld = nothere.dae\n" + ends)),
       HasSubstr("nothere.dae: no such file"));
+  // The mesh opened would be named only up to the NUL byte: refused, naming the key and its line.
+  const std::string robot = "robot = " + (omplapp() / "3D" / "Easy_robot.dae").string() + "\n";
+  EXPECT_THAT(error_of(dir.write("f.cfg",
+                                 "[problem]\n" + robot + "world = w.dae" + '\0' + ".stl\n" + ends)),
+              HasSubstr("f.cfg:3: 'world': the file name 'w.dae\\0...' holds a NUL byte"));
+  EXPECT_THAT(error_of(dir.write(
+                  "g.cfg", "[problem]\nrobot = r.dae" + std::string(1, '\0') + ".stl\n" + ends)),
+              HasSubstr("g.cfg:2: 'robot': the file name 'r.dae\\0...' holds a NUL byte"));
 }
 
 }  // namespace

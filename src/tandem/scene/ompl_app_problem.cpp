@@ -79,6 +79,14 @@ class ProblemSection {
     return it->second.text;
   }
 
+  /// A file name: refused, naming the key and its line, when it holds a NUL byte (the file opened
+  /// would be named only up to it).
+  std::string file_name(const std::string& key) const {
+    std::string name = text(key);
+    check_file_name(name, file_ + ":" + std::to_string(values_.at(key).line) + ": '" + key + "'");
+    return name;
+  }
+
   double number(const std::string& key) const {
     auto it = values_.find(key);
     if (it == values_.end())
@@ -256,9 +264,9 @@ Problem load_ompl_app_problem(const std::filesystem::path& cfg_file) {
   const ProblemSection p(name, section->second);
   const bool planar = !p.has("start.z");
 
-  const std::filesystem::path robot_file = mesh_path(cfg_file, p.text("robot"));
+  const std::filesystem::path robot_file = mesh_path(cfg_file, p.file_name("robot"));
   LoadedMesh robot = load_mesh(robot_file);
-  const std::filesystem::path world_file = mesh_path(cfg_file, p.text("world"));
+  const std::filesystem::path world_file = mesh_path(cfg_file, p.file_name("world"));
   LoadedMesh world = load_mesh(world_file);
   centre_robot(robot, planar);
 
