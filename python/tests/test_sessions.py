@@ -2,7 +2,6 @@
 replay`), and experiments run from Python as `tandem bench` runs them."""
 import json
 import os
-import subprocess
 import tempfile
 
 import numpy as np
@@ -10,16 +9,7 @@ import pytest
 
 import tandem
 
-TANDEM_BIN = os.environ.get("TANDEM_BIN", "build/apps/tandem/tandem")
-
-
-def run_cli(*args):
-    return subprocess.run([TANDEM_BIN, *args], capture_output=True, text=True, check=False)
-
-
-@pytest.fixture(scope="module")
-def cluttered():
-    return tandem.Problem("cluttered-1")
+from command_line import run_cli
 
 
 def test_a_planner_steps_and_its_trees_grow(cluttered):

@@ -3,7 +3,6 @@ collision and distance queries against known geometry, the planners' parameters,
 carry tandem's message."""
 import json
 import os
-import subprocess
 import tempfile
 
 import numpy as np
@@ -11,16 +10,7 @@ import pytest
 
 import tandem
 
-TANDEM_BIN = os.environ.get("TANDEM_BIN", "build/apps/tandem/tandem")
-
-
-def run_cli(*args):
-    return subprocess.run([TANDEM_BIN, *args], capture_output=True, text=True, check=False)
-
-
-@pytest.fixture(scope="module")
-def cluttered():
-    return tandem.Problem("cluttered-1")
+from command_line import run_cli
 
 
 def test_a_problem_shows_its_name_bounds_start_goal_and_obstacles(cluttered):
