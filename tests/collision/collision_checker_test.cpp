@@ -8,6 +8,7 @@
 
 #include "support/test_support.hpp"
 #include "tandem/core/error.hpp"
+#include "tandem/core/rng.hpp"
 
 namespace tandem {
 namespace {
@@ -164,6 +165,41 @@ TEST(CollisionChecker, ClonesShareGeometryButNotCounters) {
   sweep(checker, first);
   t.join();
   EXPECT_EQ(first, second);
+}
+
+TEST(CollisionChecker, CountsTheWorkOfItsQueriesTheSameForTheSameQueries) {
+  // The cube and the left box as meshes (tandem's walk of their trees), the sphere through FCL.
+  Scene s = two_obstacles();
+  s.object.parts[0].geometry = unit_shape("mesh");
+  s.obstacles[0].parts[0].geometry =
+      MeshShape{std::make_shared<TriangleMesh>(tessellate(Box{{1, 4, 4}})), "left"};
+  CollisionChecker checker(s);
+  EXPECT_EQ(query_work(checker.counters()), 0u);
+  const auto ask = [](CollisionChecker& c) {
+    Rng rng(4);
+    for (int i = 0; i < 300; ++i) {
+      const Config q = at(rng.uniform(-1.5, 3.5), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      c.is_collision_free(q);
+      c.clearance_bound(q, 0.5);
+    }
+  };
+  ask(checker);
+  const CollisionCounters& c = checker.counters();
+  EXPECT_GT(c.box_tests, 0u);
+  EXPECT_GT(c.triangle_tests, 0u);
+  EXPECT_GT(c.fcl_calls, 0u);
+  const std::uint64_t work = query_work(c);
+  // Each query's fixed part, and each test at least once.
+  EXPECT_GE(work, 600u + c.box_tests + c.triangle_tests + c.fcl_calls);
+  // Another checker asked the same (another thread, another time) counts the same work.
+  CollisionChecker other = checker.clone();
+  ask(other);
+  EXPECT_EQ(other.counters().box_tests, c.box_tests);
+  EXPECT_EQ(other.counters().triangle_tests, c.triangle_tests);
+  EXPECT_EQ(query_work(other.counters()), work);
+  // More queries, more work.
+  ask(other);
+  EXPECT_GT(query_work(other.counters()), work);
 }
 
 TEST(CollisionChecker, RejectsNonsensicalPrimitives) {

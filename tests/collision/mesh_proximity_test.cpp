@@ -115,5 +115,36 @@ TEST(MeshProximity, IsTheCapExactlyWhenNothingIsNearer) {
   EXPECT_TRUE(meshes_intersect(*m, far, *m, far));
 }
 
+TEST(MeshProximity, CountsTheBoxesAndTrianglesItTests) {
+  Rng rng(9);
+  const Soup s = random_soup(rng, 50);
+  const auto m = model<fcl::OBBd>(s);
+  const Eigen::Isometry3d here = Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d far = Eigen::Translation3d(5.0, 0.0, 0.0) * here;
+  // Far apart: the two roots, and nothing below them.
+  WalkTests apart;
+  EXPECT_FALSE(meshes_intersect(*m, here, *m, far, &apart));
+  EXPECT_EQ(apart.boxes, 1u);
+  EXPECT_EQ(apart.triangles, 0u);
+  EXPECT_EQ(mesh_distance_bound(*m, here, *m, far, 0.1, 0.25, &apart), 0.1);
+  EXPECT_EQ(apart.boxes, 2u);  // added to what was there
+  // On itself: boxes opened down to a pair of triangles that meet.
+  WalkTests met;
+  EXPECT_TRUE(meshes_intersect(*m, far, *m, far, &met));
+  EXPECT_GT(met.boxes, 2u);
+  EXPECT_GE(met.triangles, 1u);
+  // A query that searches further tests more, and the same query counts the same again.
+  const Eigen::Isometry3d near = Eigen::Translation3d(1.2, 0.0, 0.0) * here;
+  WalkTests capped, wider, again;
+  const double d1 = mesh_distance_bound(*m, here, *m, near, 0.05, 0.0, &capped);
+  const double d2 = mesh_distance_bound(*m, here, *m, near, 1.0, 0.0, &wider);
+  mesh_distance_bound(*m, here, *m, near, 1.0, 0.0, &again);
+  EXPECT_LE(d1, d2);
+  EXPECT_GT(wider.triangles, 0u);
+  EXPECT_GT(wider.boxes, capped.boxes);
+  EXPECT_EQ(again.boxes, wider.boxes);
+  EXPECT_EQ(again.triangles, wider.triangles);
+}
+
 }  // namespace
 }  // namespace tandem

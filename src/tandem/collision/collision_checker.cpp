@@ -214,6 +214,13 @@ ObjectExtent principal_extent(const std::vector<Eigen::Vector3d>& points) {
 /// The most inner spheres a pre-filter query opens before it leaves the query to FCL.
 constexpr int kPrefilterBudget = 64;
 
+/// query_work()'s weights, in tests of a pair of boxes: a query's fixed part (its pose, the broad
+/// phase), a pair of triangles, a sphere the pre-filter opens (two grid look-ups), a call to FCL.
+constexpr std::uint64_t kQueryWork = 10;
+constexpr std::uint64_t kTriangleWork = 4;
+constexpr std::uint64_t kSphereWork = 2;
+constexpr std::uint64_t kFclCallWork = 40;
+
 /// The distance grid of the obstacles and the sphere tree of the object.
 struct Prefilter {
   Bounds bounds;
@@ -244,13 +251,25 @@ std::shared_ptr<const Prefilter> make_prefilter(const SharedGeometry& g, const B
       Prefilter{bounds, spacing, std::move(grid), std::move(object), std::move(blocks)});
 }
 
+/// Adds a walk's tests to the counters.
+void count(const WalkTests& tests, CollisionCounters& counters) {
+  counters.box_tests += tests.boxes;
+  counters.triangle_tests += tests.triangles;
+}
+
 /// Whether one part of the object (at X_WP) touches one part of an obstacle: tandem's walk of the
 /// OBB trees for two meshes (fcl::collide's answer), fcl::collide otherwise. An FCL exception
 /// counts as a collision.
 bool parts_collide(const FclPart& part, const Eigen::Isometry3d& X_WP, const FclPart& obstacle,
                    const fcl::CollisionRequestd& request, CollisionCounters& counters) {
-  if (part.is_mesh && obstacle.is_mesh)
-    return meshes_intersect(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose);
+  if (part.is_mesh && obstacle.is_mesh) {
+    WalkTests tests;
+    const bool hit =
+        meshes_intersect(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose, &tests);
+    count(tests, counters);
+    return hit;
+  }
+  ++counters.fcl_calls;
   try {
     fcl::CollisionResultd result;
     return fcl::collide(part.collision_geometry.get(), X_WP, obstacle.collision_geometry.get(),
@@ -278,6 +297,7 @@ NearestObstacle nearest_pair(const FclPart& part, const Eigen::Isometry3d& X_WP,
     // (checked for every pair of geometry kinds in collision_checker_test). So the mesh goes
     // first, and the points of a sphere-mesh pair are taken to the world frame here.
     const bool obstacle_first = obstacle.is_mesh && !part.is_mesh;
+    ++counters.fcl_calls;
     fcl::DistanceResultd result;
     if (obstacle_first) {
       fcl::distance(obstacle.geometry.get(), obstacle.pose, part.geometry.get(), X_WP, distance,
@@ -302,8 +322,9 @@ NearestObstacle nearest_pair(const FclPart& part, const Eigen::Isometry3d& X_WP,
 /// The pre-filter's bound on the object's clearance at X_WO up to cap, or a value below `enough`
 /// when it cannot show `enough`.
 double prefilter_clearance(const Prefilter& p, const Eigen::Isometry3d& X_WO, double enough,
-                           double cap) {
-  return p.object.clearance_at(p.grid, X_WO, enough, cap, kPrefilterBudget);
+                           double cap, CollisionCounters& counters) {
+  return p.object.clearance_at(p.grid, X_WO, enough, cap, kPrefilterBudget,
+                               &counters.spheres_opened);
 }
 
 }  // namespace
@@ -578,7 +599,7 @@ bool CollisionChecker::is_collision_free(const Config& q) {
   if (m.active != nullptr) {
     // Any positive bound shows that nothing touches.
     const double positive = 1e-6 * m.active->grid.spacing();
-    if (prefilter_clearance(*m.active, X_WO, positive, positive) >= positive) {
+    if (prefilter_clearance(*m.active, X_WO, positive, positive, m.counters) >= positive) {
       ++m.counters.prefilter_answers;
       return true;
     }
@@ -648,7 +669,7 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
   const Eigen::Isometry3d X_WO = q.pose();
   fcl_cap = std::min(fcl_cap, cap);
   if (m.active != nullptr) {
-    const double c = prefilter_clearance(*m.active, X_WO, fcl_cap, cap);
+    const double c = prefilter_clearance(*m.active, X_WO, fcl_cap, cap, m.counters);
     if (c >= fcl_cap) {
       ++m.counters.prefilter_answers;
       return c;
@@ -665,8 +686,10 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
       if (box.distance_to(obstacle.box) >= best)
         return false;
       if (part.is_mesh && obstacle.is_mesh) {
+        WalkTests tests;
         best = mesh_distance_bound(obb_tree(part), X_WP, obb_tree(obstacle), obstacle.pose, best,
-                                   kClearanceRelativeError);
+                                   kClearanceRelativeError, &tests);
+        count(tests, m.counters);
         return best <= 0.0;
       }
       // Starting from best * (1 + e), FCL prunes every pair of bounding volumes at least that far
@@ -675,6 +698,7 @@ double CollisionChecker::clearance_bound(const Config& q, double cap, double fcl
       // below best, and a state as far as the cap would then read as closer than it.
       const double start = best * kGrow;
       fcl::DistanceResultd result(start);
+      ++m.counters.fcl_calls;
       try {
         fcl::distance(part.geometry.get(), X_WP, obstacle.geometry.get(), obstacle.pose,
                       m.clearance_request, result);
@@ -713,6 +737,12 @@ std::size_t CollisionChecker::obstacle_count() const {
 
 const std::string& CollisionChecker::obstacle_name(std::size_t index) const {
   return impl_->geometry->obstacle_names.at(index);
+}
+
+std::uint64_t query_work(const CollisionCounters& c) {
+  const std::uint64_t queries = c.state_checks + c.distance_queries + c.clearance_queries;
+  return kQueryWork * queries + c.box_tests + kTriangleWork * c.triangle_tests +
+         kSphereWork * c.spheres_opened + kFclCallWork * c.fcl_calls;
 }
 
 const CollisionCounters& CollisionChecker::counters() const {

@@ -49,8 +49,8 @@ Eigen::Matrix3d product(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
 class TreePair {
  public:
   TreePair(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
-           const Eigen::Isometry3d& X_WB)
-      : a_(a), b_(b) {
+           const Eigen::Isometry3d& X_WB, WalkTests& tests)
+      : a_(a), b_(b), tests_(tests) {
     fcl::relativeTransform(X_WA.linear(), X_WA.translation(), X_WB.linear(), X_WB.translation(), R_,
                            T_);
   }
@@ -73,6 +73,7 @@ class TreePair {
   bool intersect(int i, int j, const Placed& pb) const {
     const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
+    ++tests_.boxes;
     if (!boxes_within(na.bv, pb, nb.bv.extent, 0.0))
       return false;
     if (is_leaf(na) && is_leaf(nb))
@@ -91,7 +92,10 @@ class TreePair {
   void lower(int i, int j, const Placed& pb, double shrink, double& best) const {
     const fcl::BVNode<fcl::OBBd>& na = a_.getBV(i);
     const fcl::BVNode<fcl::OBBd>& nb = b_.getBV(j);
-    if (best <= 0.0 || !boxes_within(na.bv, pb, nb.bv.extent, best * shrink))
+    if (best <= 0.0)
+      return;
+    ++tests_.boxes;
+    if (!boxes_within(na.bv, pb, nb.bv.extent, best * shrink))
       return;
     if (is_leaf(na) && is_leaf(nb)) {
       best = std::min(best, triangle_distance(primitive_of(na), primitive_of(nb)));
@@ -128,6 +132,7 @@ class TreePair {
   }
 
   bool triangles_intersect(int ta, int tb) const {
+    ++tests_.triangles;
     const fcl::Triangle& s = a_.tri_indices[ta];
     const fcl::Triangle& t = b_.tri_indices[tb];
     return fcl::detail::Intersect<double>::intersect_Triangle(
@@ -136,6 +141,7 @@ class TreePair {
   }
 
   double triangle_distance(int ta, int tb) const {
+    ++tests_.triangles;
     const fcl::Triangle& s = a_.tri_indices[ta];
     const fcl::Triangle& t = b_.tri_indices[tb];
     const Eigen::Vector3d P[3] = {a_.vertices[s[0]], a_.vertices[s[1]], a_.vertices[s[2]]};
@@ -147,6 +153,7 @@ class TreePair {
 
   const ObbTree& a_;
   const ObbTree& b_;
+  WalkTests& tests_;
   Eigen::Matrix3d R_;
   Eigen::Vector3d T_;
 };
@@ -154,16 +161,19 @@ class TreePair {
 }  // namespace
 
 bool meshes_intersect(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
-                      const Eigen::Isometry3d& X_WB) {
-  const TreePair pair(a, X_WA, b, X_WB);
+                      const Eigen::Isometry3d& X_WB, WalkTests* tests) {
+  WalkTests here;
+  const TreePair pair(a, X_WA, b, X_WB, tests != nullptr ? *tests : here);
   return pair.intersect(0, 0, pair.place(0));
 }
 
 double mesh_distance_bound(const ObbTree& a, const Eigen::Isometry3d& X_WA, const ObbTree& b,
-                           const Eigen::Isometry3d& X_WB, double cap, double relative_error) {
+                           const Eigen::Isometry3d& X_WB, double cap, double relative_error,
+                           WalkTests* tests) {
   const double grow = 1.0 + relative_error;
   double best = cap * grow * (1.0 + kRoundingShare);
-  const TreePair pair(a, X_WA, b, X_WB);
+  WalkTests here;
+  const TreePair pair(a, X_WA, b, X_WB, tests != nullptr ? *tests : here);
   pair.lower(0, 0, pair.place(0), 1.0 / grow, best);
   return std::min(cap, best / grow);
 }

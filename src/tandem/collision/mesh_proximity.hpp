@@ -18,18 +18,30 @@
 // few dozen operations: on Apartment's near-contact states a clearance query capped at one
 // resolution step took 127 us against 211 ("clearance").
 //
+// Both add the pairs they tested to `tests` when given (the portfolio's measure of a search's
+// work, runs/portfolio.hpp).
+//
 // Threading: pure functions of immutable models; safe to call from any thread.
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBB.h>
 
 #include <Eigen/Geometry>
+#include <cstdint>
 
 namespace tandem {
 
+/// The pairs of boxes and of triangles a walk tested: a measure of its work that depends only on
+/// the query (the same on every machine), not on the clock.
+struct WalkTests {
+  std::uint64_t boxes = 0;
+  std::uint64_t triangles = 0;
+};
+
 /// Whether mesh a posed at X_WA and mesh b posed at X_WB intersect, as fcl::collide answers.
 bool meshes_intersect(const fcl::BVHModel<fcl::OBBd>& a, const Eigen::Isometry3d& X_WA,
-                      const fcl::BVHModel<fcl::OBBd>& b, const Eigen::Isometry3d& X_WB);
+                      const fcl::BVHModel<fcl::OBBd>& b, const Eigen::Isometry3d& X_WB,
+                      WalkTests* tests = nullptr);
 
 /// A lower bound on the distance between mesh a posed at X_WA and mesh b posed at X_WB, capped:
 /// min(cap, d / (1 + relative_error)), where d is the least distance between the pairs of
@@ -38,6 +50,6 @@ bool meshes_intersect(const fcl::BVHModel<fcl::OBBd>& a, const Eigen::Isometry3d
 /// meshes intersect.
 double mesh_distance_bound(const fcl::BVHModel<fcl::OBBd>& a, const Eigen::Isometry3d& X_WA,
                            const fcl::BVHModel<fcl::OBBd>& b, const Eigen::Isometry3d& X_WB,
-                           double cap, double relative_error);
+                           double cap, double relative_error, WalkTests* tests = nullptr);
 
 }  // namespace tandem

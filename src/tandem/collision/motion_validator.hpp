@@ -111,6 +111,8 @@ class MotionValidator {
   /// Number of configuration checks so far (each is one bounds test plus one collision query, or
   /// in exact mode one clearance bound).
   std::uint64_t checks() const { return checks_; }
+  /// The work of the checker's queries so far (query_work()).
+  std::uint64_t work() const { return query_work(checker_.counters()); }
 
  private:
   /// Runs one query of the checker, counted in checks() and timed while profiling.

@@ -84,9 +84,16 @@ int SphereTree::build(std::vector<Ball>& balls, std::size_t begin, std::size_t e
 }
 
 double SphereTree::clearance_at(const DistanceGrid& grid, const Eigen::Isometry3d& X_WO,
-                                double enough, double enough_for_all, int budget) const {
+                                double enough, double enough_for_all, int budget,
+                                std::uint64_t* opened) const {
   if (nodes_.empty())
     return enough_for_all;
+  const int given = budget;
+  const auto done = [&](double bound) {
+    if (opened != nullptr)
+      *opened += static_cast<std::uint64_t>(given - std::max(budget, 0));
+    return bound;
+  };
   auto bound_of = [&](const Node& n) { return grid.lower_bound(X_WO * n.centre) - n.radius; };
   double best = enough_for_all;
   // Depth first, the child with the lower bound first: a configuration the grid cannot certify
@@ -102,11 +109,11 @@ double SphereTree::clearance_at(const DistanceGrid& grid, const Eigen::Isometry3
     if (n.first_child < 0) {
       best = bound;
       if (best < enough)
-        return best;
+        return done(best);
       continue;
     }
     if (--budget < 0 || top + 2 > stack.size())
-      return -1.0;  // too dear to settle here: FCL decides
+      return done(-1.0);  // too dear to settle here: FCL decides
     const auto a = static_cast<std::size_t>(n.first_child);
     const auto b = static_cast<std::size_t>(n.second_child);
     const double bound_a = bound_of(nodes_[a]), bound_b = bound_of(nodes_[b]);
@@ -118,7 +125,7 @@ double SphereTree::clearance_at(const DistanceGrid& grid, const Eigen::Isometry3
       stack[top++] = {b, bound_b};
     }
   }
-  return best;
+  return done(best);
 }
 
 }  // namespace tandem

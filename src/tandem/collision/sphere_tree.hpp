@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <vector>
 
 #include "tandem/collision/distance_grid.hpp"
@@ -33,9 +34,9 @@ class SphereTree {
   /// that bound is at least `enough`; the bound is capped at `enough_for_all` (>= enough), beyond
   /// which the hierarchy is not opened. Returns a value < enough (without finishing) as soon as
   /// a leaf shows that the grid cannot certify `enough`, or when more than `budget` inner
-  /// spheres would have to be opened.
+  /// spheres would have to be opened. Adds the inner spheres it opened to `opened` when given.
   double clearance_at(const DistanceGrid& grid, const Eigen::Isometry3d& X_WO, double enough,
-                      double enough_for_all, int budget) const;
+                      double enough_for_all, int budget, std::uint64_t* opened = nullptr) const;
 
   std::size_t leaf_count() const { return leaves_; }
 

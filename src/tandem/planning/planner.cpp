@@ -77,6 +77,7 @@ void Planner::update_counts() {
       extension_outcomes_[static_cast<std::size_t>(ExtendStatus::advanced)] +
       extension_outcomes_[static_cast<std::size_t>(ExtendStatus::stopped)];
   stats_.collision_checks = validator_.checks() - checks_at_start_;
+  stats_.work = validator_.work() - work_at_start_;
   stats_.collision_time_s = validator_.check_seconds() - check_seconds_at_start_;
   stats_.nearest_time_s = nearest_seconds_;
 }
@@ -101,6 +102,7 @@ PlannerStatus Planner::step() {
   if (!started_) {
     started_ = true;
     checks_at_start_ = validator_.checks();
+    work_at_start_ = validator_.work();
     if (settings_.profile)
       validator_.set_profiling(true);
     check_seconds_at_start_ = validator_.check_seconds();

@@ -47,6 +47,9 @@ struct PlannerStats {
   std::size_t nodes = 0;               ///< in all trees, roots included
   std::size_t edges = 0;               ///< nodes minus roots
   std::uint64_t collision_checks = 0;  ///< configuration checks by this planner's validator
+  /// The work of its validator's collision queries (query_work(): tests of boxes and triangles,
+  /// weighted), the same on every machine; the portfolio's race is run on it.
+  std::uint64_t work = 0;
   /// Time in collision queries and in nearest-neighbour queries (with settings.profile).
   double collision_time_s = 0.0;
   double nearest_time_s = 0.0;
@@ -142,6 +145,7 @@ class Planner : public RoadmapView {
   PlannerStatus status_ = PlannerStatus::running;
   bool started_ = false;
   std::uint64_t checks_at_start_ = 0;
+  std::uint64_t work_at_start_ = 0;
   double check_seconds_at_start_ = 0.0;
   double nearest_seconds_ = 0.0;
   PlannerStats stats_;

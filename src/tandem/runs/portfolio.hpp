@@ -10,8 +10,9 @@
 // part fits the workspace route lengthwise (sampling/guided_sampler.hpp), the route leads
 // RRT-Connect's samples and RRT-Connect on every member was measured faster (README).
 //
-// Deterministic: the winner is the member that solves with the least work (its collision checks,
-// as deterministic as its iterations), the lower index on a tie — not the first to finish in time,
+// Deterministic: the winner is the member that solves with the least work (its collision
+// queries' tests of boxes and triangles, query_work(), as deterministic as its iterations and
+// near proportional to their time), the lower index on a tie — not the first to finish in time,
 // which depends on the machine. A member stops as soon as it can no longer win (its work passed
 // the best solve's), so the result for a given seed and thread count is the same on any machine
 // and under any load, unless the time limit ends the run first (as for one thread).
