@@ -130,7 +130,9 @@ ParamTable<S> make_table() {
        .min = 0.0,
        .max = 256.0,
        .help = "Independent searches run at once, each on its own thread, seeded from the run's "
-               "seed; the one that solves with the fewest collision checks wins (0: one per core)",
+               "seed; the one that solves with the least work (its collision queries' tests) wins "
+               "(0: one "
+               "per core)",
        .group = "portfolio"},
       &S::threads));
   return t;
