@@ -131,8 +131,7 @@ ParamTable<S> make_table() {
        .max = 256.0,
        .help = "Independent searches run at once, each on its own thread, seeded from the run's "
                "seed; the one that solves with the least work (its collision queries' tests) wins "
-               "(0: one "
-               "per core)",
+               "(0: one per core)",
        .group = "portfolio"},
       &S::threads));
   return t;
