@@ -62,7 +62,7 @@ TEST(DistanceGrid, APartInsideASolidBoxIsNeverCertifiedFree) {
 }
 
 TEST(DistanceGrid, NeverDecidesWronglyOnEveryShippedProblem) {
-  std::uint64_t answered = 0, asked = 0;
+  std::uint64_t answered = 0, asked = 0, opened = 0;
   for (const std::string& name : test::shipped_problems()) {
     SCOPED_TRACE(name);
     const Problem p = load_problem(name);
@@ -87,6 +87,7 @@ TEST(DistanceGrid, NeverDecidesWronglyOnEveryShippedProblem) {
         EXPECT_LE(bound, 0.0);
     }
     answered += gridded.counters().prefilter_answers;
+    opened += gridded.counters().spheres_opened;
     asked += 2 * configs.size();
     RecordProperty(name + ": answered by the grid alone",
                    std::to_string(gridded.counters().prefilter_answers));
@@ -94,6 +95,9 @@ TEST(DistanceGrid, NeverDecidesWronglyOnEveryShippedProblem) {
   // The grid is not idle: it answers a share of the queries alone (14% of them on the built-in
   // scenes, which are all there is without ../shared).
   EXPECT_GT(answered, asked / 20);
+  // Its work is counted (query_work()): spheres opened, at most its budget of 64 a query.
+  EXPECT_GT(opened, 0u);
+  EXPECT_LE(opened, 64u * asked);
 }
 
 }  // namespace
