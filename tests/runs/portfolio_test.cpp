@@ -1,6 +1,6 @@
 // The portfolio (runs/portfolio.hpp): its winner is the member that solves with the least work
-// (its collision queries' tests, query_work()), whatever the threads' timing, so a run is reproducible from its seed and
-// thread count.
+// (its collision queries' tests, query_work()), whatever the threads' timing, so a run is
+// reproducible from its seed and thread count.
 
 #include "tandem/runs/portfolio.hpp"
 
