@@ -1,10 +1,11 @@
 // Exact (continuous) motion validation: clearance bounds held against FCL's own collision and
 // distance answers, a thin wall that the discrete check steps over, and random motions on every
 // shipped problem that the exact check never accepts where a 100x finer discrete check finds a
-// collision.
+// collision; the same checks asked in rounds with a helper thread.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +60,21 @@ TEST(ExactMotion, CatchesTheThinWallTheDiscreteCheckStepsOver) {
   MotionValidator open_exact(open.space, open_checker, kExact);
   EXPECT_TRUE(open_exact.check_motion(open.start, open.goal));
   EXPECT_LE(open_exact.checks(), 3u);
+}
+
+TEST(ExactMotion, InRoundsCatchesTheThinWallWhereverTheMotionsMiddleIs) {
+  const Problem p = thin_wall_problem();
+  CollisionChecker checker(p.scene);
+  MotionValidator helped(p.space, checker, kExact);
+  helped.use_helper_thread();
+  // The wall at x = 0: through it from farther and farther away, the middle (asked with the ends)
+  // certifies a stretch that stops short of it; in front of it, the whole motion is free.
+  for (double x : {-0.6, -1.0, -1.5, -2.0, -3.0, -4.5}) {
+    SCOPED_TRACE(x);
+    EXPECT_FALSE(helped.check_motion(at(x, 0), at(0.6, 0)));
+    EXPECT_FALSE(helped.check_motion(at(0.6, 0), at(x, 0)));
+    EXPECT_TRUE(helped.check_motion(at(x, 0), at(-0.15, 0)));
+  }
 }
 
 TEST(ExactMotion, TurningIsBoundedByTheObjectsRadius) {
@@ -203,6 +219,50 @@ TEST(ExactMotion, NeverAcceptsAMotionThatAHundredTimesFinerDiscreteCheckRejects)
     EXPECT_EQ(tried, 300);
     EXPECT_GT(accepted, 30) << "too few motions accepted for the test to mean something";
     RecordProperty(name + ": discrete accepts, exact refuses", discrete_only);
+  }
+}
+
+/// The checks' answers of `v` to `motions`, in order.
+std::vector<bool> answers(MotionValidator& v,
+                          const std::vector<std::pair<Config, Config>>& motions) {
+  std::vector<bool> out;
+  for (const auto& [a, b] : motions)
+    out.push_back(v.check_motion(a, b));
+  return out;
+}
+
+TEST(ExactMotion, InRoundsWithAHelperThreadTheAnswersAreTheSameAndSoIsTheWork) {
+  for (const std::string& name : test::shipped_problems()) {
+    SCOPED_TRACE(name);
+    const Problem p = load_problem(name);
+    CollisionChecker checker(p.scene);
+    MotionValidator alone(p.space, checker, kExact);
+    Rng rng(5);
+    std::vector<std::pair<Config, Config>> motions;
+    while (motions.size() < 300) {
+      const Config a = p.space.sample_uniform(rng);
+      if (alone.is_valid(a))
+        motions.emplace_back(
+            a, p.space.interpolate(a, p.space.sample_uniform(rng), rng.uniform(0.0, 0.5)));
+    }
+    const std::vector<bool> expected = answers(alone, motions);
+    const auto valid = std::ranges::count(expected, true);
+    EXPECT_GT(valid, 20) << "too few valid motions for the test to mean something";
+    EXPECT_GT(std::ssize(expected) - valid, 20) << "too few invalid ones";
+    // Two validators with helpers, each on a checker of its own: the same answers as alone, and
+    // the same queries and work as each other, whichever thread answered which query.
+    std::vector<std::uint64_t> checks, work;
+    for (int k = 0; k < 2; ++k) {
+      CollisionChecker own = checker.clone();
+      MotionValidator helped(p.space, own, kExact);
+      helped.use_helper_thread();
+      EXPECT_EQ(answers(helped, motions), expected);
+      checks.push_back(helped.checks());
+      work.push_back(helped.work());
+      EXPECT_GT(own.counters().clearance_queries, 0u);
+    }
+    EXPECT_EQ(checks[0], checks[1]);
+    EXPECT_EQ(work[0], work[1]);
   }
 }
 

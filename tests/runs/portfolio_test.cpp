@@ -134,7 +134,10 @@ TEST(Portfolio, WhereTheRouteLeadsTheMixedPortfolioRunsRrtConnectOnEveryMember) 
   EXPECT_EQ(run_route(problem, birrt_spec(1, 4, "rrt"), checker), nullptr);
   std::set<unsigned> winners;
   for (std::uint64_t seed : {1u, 2u, 5u}) {
-    const RunOutcome mixed = execute_run(problem, birrt_spec(seed, 4, kMixedPortfolio));
+    // Member 0 without its helper thread from the start: RRT-Connect on every member.
+    RunSpec spec = birrt_spec(seed, 4, kMixedPortfolio);
+    spec.helper_work = 0;
+    const RunOutcome mixed = execute_run(problem, spec);
     const RunOutcome birrt = execute_run(problem, birrt_spec(seed, 4));
     winners.insert(birrt.member);
     EXPECT_EQ(mixed.member_planner, "birrt");
@@ -146,6 +149,40 @@ TEST(Portfolio, WhereTheRouteLeadsTheMixedPortfolioRunsRrtConnectOnEveryMember) 
   }
   // The seeds are such that an odd member wins: one that the alternation would make an RRT.
   EXPECT_TRUE(winners.count(1) > 0 || winners.count(3) > 0);
+}
+
+TEST(Portfolio, WhereTheRouteLeadsMemberZeroHasAHelperThreadAndMemberOneWaitsForIt) {
+  const Problem problem = test::detour_problem();
+  for (std::uint64_t seed : {1u, 2u, 5u}) {
+    SCOPED_TRACE(seed);
+    // The detour's searches end long before member 0 would release its helper.
+    const RunSpec spec = birrt_spec(seed, 2, kMixedPortfolio);
+    const RunOutcome helped = execute_run(problem, spec);
+    ASSERT_EQ(helped.status, PlannerStatus::solved);
+    EXPECT_EQ(helped.member, 0u);
+    EXPECT_EQ(helped.threads, 2u);
+    EXPECT_LT(helped.stats.work, spec.helper_work);
+    // Its motions were checked in rounds, which ask other queries than one at a time: other work
+    // than the plain member 0's, the same on every run.
+    const RunOutcome plain = alone(problem, seed, 0);
+    EXPECT_NE(helped.stats.work, plain.stats.work);
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const RunOutcome again = execute_run(problem, spec);
+      EXPECT_EQ(again.tree_digest, helped.tree_digest);
+      EXPECT_EQ(again.stats.work, helped.stats.work);
+    }
+    // Released after a third of that work: member 1 joins the race, and the run is reproducible.
+    RunSpec early = spec;
+    early.helper_work = helped.stats.work / 3;
+    const RunOutcome first = execute_run(problem, early);
+    ASSERT_EQ(first.status, PlannerStatus::solved);
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const RunOutcome again = execute_run(problem, early);
+      EXPECT_EQ(again.member, first.member);
+      EXPECT_EQ(again.tree_digest, first.tree_digest);
+      EXPECT_EQ(again.stats.work, first.stats.work);
+    }
+  }
 }
 
 TEST(Portfolio, CountsEveryMembersCollisionChecks) {

@@ -752,4 +752,17 @@ void CollisionChecker::reset_counters() {
   impl_->counters = {};
 }
 
+void CollisionChecker::add_counters(const CollisionCounters& other) {
+  CollisionCounters& c = impl_->counters;
+  c.state_checks += other.state_checks;
+  c.distance_queries += other.distance_queries;
+  c.clearance_queries += other.clearance_queries;
+  c.fcl_errors += other.fcl_errors;
+  c.prefilter_answers += other.prefilter_answers;
+  c.box_tests += other.box_tests;
+  c.triangle_tests += other.triangle_tests;
+  c.spheres_opened += other.spheres_opened;
+  c.fcl_calls += other.fcl_calls;
+}
+
 }  // namespace tandem

@@ -151,6 +151,8 @@ class CollisionChecker {
 
   const CollisionCounters& counters() const;
   void reset_counters();
+  /// Adds another checker's counts to this one's (a QueryHelper's queries made for this one).
+  void add_counters(const CollisionCounters& other);
 
  private:
   struct Impl;

@@ -56,6 +56,13 @@ void MotionValidator::configure(const ValidationSettings& settings) {
     checker_.use_distance_grid(space_.bounds(), kGridSteps * space_.translation_step());
   else
     checker_.drop_distance_grid();
+  // The helper's clone takes the grid as it is now.
+  if (helper_ != nullptr)
+    helper_->set_checker(checker_.clone());
+}
+
+void MotionValidator::use_helper_thread() {
+  helper_ = std::make_unique<QueryHelper>(checker_.clone());
 }
 
 template <class Query>
@@ -83,14 +90,51 @@ double MotionValidator::clearance(const Config& q, double cap) {
   // is asked for the whole of it.
   if (margin_ > 0.0)
     return clearance_beyond_margin(q, cap);
-  cap = std::max(cap, tolerance_);
-  const double fcl_cap = std::max(std::min(cap, kCapSteps * space_.translation_step()), tolerance_);
+  const auto [full, fcl_cap] = clearance_caps(cap);
   // A tree node's bound, known since it was added, serves every motion from it.
   if (const std::optional<double> known = cache_.find(q, fcl_cap))
-    return std::min(*known, cap);
-  const double c = counted([&] { return checker_.clearance_bound(q, cap, fcl_cap); });
+    return std::min(*known, full);
+  const double c = counted([&] { return checker_.clearance_bound(q, full, fcl_cap); });
   cache_.store(q, c, fcl_cap);
   return c;
+}
+
+std::pair<double, double> MotionValidator::clearance_caps(double cap) const {
+  cap = std::max(cap, tolerance_);
+  return {cap, std::max(std::min(cap, kCapSteps * space_.translation_step()), tolerance_)};
+}
+
+RoundQuery MotionValidator::clearance_query(const Config& q, double cap) const {
+  const auto [full, fcl_cap] = clearance_caps(cap);
+  return {.q = q, .cap = full, .fcl_cap = fcl_cap, .yes_no = false};
+}
+
+void MotionValidator::answer_round() {
+  answers_.assign(round_.size(), 0.0);
+  asked_.clear();
+  asked_index_.clear();
+  for (std::size_t i = 0; i < round_.size(); ++i) {
+    const RoundQuery& r = round_[i];
+    if (!r.yes_no) {
+      if (const std::optional<double> known = cache_.find(r.q, r.fcl_cap)) {
+        answers_[i] = std::min(*known, r.cap);
+        continue;
+      }
+    }
+    asked_.push_back(r);
+    asked_index_.push_back(i);
+  }
+  replies_.resize(asked_.size());
+  checks_ += asked_.size();
+  const Stopwatch watch;
+  helper_->run(asked_, replies_, checker_);
+  if (profiling_)
+    check_seconds_ += watch.seconds();
+  for (std::size_t k = 0; k < asked_.size(); ++k) {
+    answers_[asked_index_[k]] = replies_[k];
+    if (!asked_[k].yes_no)
+      cache_.store(asked_[k].q, replies_[k], asked_[k].fcl_cap);
+  }
 }
 
 double MotionValidator::clearance_beyond_margin(const Config& q, double cap) {
@@ -163,6 +207,8 @@ bool MotionValidator::collides_coarsely(const Config& a, const Config& b) {
 }
 
 bool MotionValidator::check_motion_exact(const Config& a, const Config& b) {
+  if (helper_ != nullptr && margin_ == 0.0)
+    return check_motion_in_rounds(a, b);
   const double rate = displacement_rate(a, b);
   if (!space_.satisfies_bounds(b)) {
     ++checks_;
@@ -204,6 +250,78 @@ bool MotionValidator::check_motion_exact(const Config& a, const Config& b) {
       stretches_.emplace_back(s0, mid - reach);
     if (mid + reach <= s1)
       stretches_.emplace_back(mid + reach, s1);
+  }
+  return true;
+}
+
+bool MotionValidator::check_motion_in_rounds(const Config& a, const Config& b) {
+  const double rate = displacement_rate(a, b);
+  if (!space_.satisfies_bounds(b)) {
+    ++checks_;
+    return false;
+  }
+  // 0. The end alone (most motions tried end in collision), then the other coarse states.
+  if (!collision_free(b))
+    return false;
+  const unsigned n = std::min(kCoarseStates, space_.segment_count(a, b));
+  round_.clear();
+  for (unsigned stride = n; stride > 1; stride /= 2) {
+    for (unsigned k = stride / 2; k < n; k += stride)
+      round_.push_back({.q = space_.step(a, b, k, n), .yes_no = true});
+  }
+  answer_round();
+  if (std::ranges::find(answers_, 0.0) != answers_.end())
+    return false;
+  // 1. The two ends' clearances, and the middle's: the bisection's first state, asked before
+  //    the ends say whether it is needed.
+  round_ = {clearance_query(b, needed_clearance(rate, 1.0))};
+  if (!(rate > 0.0)) {
+    answer_round();
+    return answers_[0] >= tolerance_;
+  }
+  round_.push_back(clearance_query(a, needed_clearance(rate, 1.0)));
+  round_.push_back(clearance_query(space_.interpolate(a, b, 0.5), needed_clearance(rate, 0.5)));
+  answer_round();
+  const double c_b = answers_[0];
+  const double c_mid = answers_[2];
+  if (c_b < tolerance_ || c_mid < tolerance_)
+    return false;
+  // 2. What the three leave uncertified: [lo, hi] less the middle's stretch.
+  const double lo = std::max(0.0, answers_[1]) / rate * kStretchShare;
+  const double hi = 1.0 - c_b / rate * kStretchShare;
+  const double mid_reach = c_mid / rate * kStretchShare;
+  stretches_.clear();
+  if (lo <= std::min(hi, 0.5 - mid_reach))
+    stretches_.emplace_back(lo, std::min(hi, 0.5 - mid_reach));
+  if (std::max(lo, 0.5 + mid_reach) <= hi)
+    stretches_.emplace_back(std::max(lo, 0.5 + mid_reach), hi);
+  // 3. The bisection, a level of it per round: each stretch's midpoint, then what is left of the
+  //    stretches on either side for the next level.
+  for (std::size_t head = 0; head < stretches_.size();) {
+    const std::size_t end = stretches_.size();
+    round_.clear();
+    for (std::size_t i = head; i < end; ++i) {
+      const auto [s0, s1] = stretches_[i];
+      const Config q = space_.interpolate(a, b, 0.5 * (s0 + s1));
+      if (!space_.satisfies_bounds(q)) {
+        ++checks_;
+        return false;
+      }
+      round_.push_back(clearance_query(q, needed_clearance(rate, 0.5 * (s1 - s0))));
+    }
+    answer_round();
+    if (std::ranges::any_of(answers_, [&](double c) { return c < tolerance_; }))
+      return false;
+    for (std::size_t i = head; i < end; ++i) {
+      const auto [s0, s1] = stretches_[i];
+      const double mid = 0.5 * (s0 + s1);
+      const double reach = answers_[i - head] / rate * kStretchShare;
+      if (mid - reach >= s0)
+        stretches_.emplace_back(s0, mid - reach);
+      if (mid + reach <= s1)
+        stretches_.emplace_back(mid + reach, s1);
+    }
+    head = end;
   }
   return true;
 }

@@ -21,15 +21,25 @@
 //   configurations, and `tandem check-path --validation discrete` re-checks exactly what the
 //   planner checked.
 //
-// Threading: not thread-safe (it drives one CollisionChecker); one per thread.
+// With a helper thread (use_helper_thread), an exact check asks for a motion's states in rounds
+// of independent queries that two threads answer together (query_helper.hpp): the end alone, the
+// other coarse states, the ends' and the middle's clearances, then each level of the bisection.
+// A round is answered whole even when one of its states fails, so the queries made, and their
+// work, depend only on the motion, not on which thread answered what; the answer is the same as
+// without the helper.
+//
+// Threading: not thread-safe (it drives one CollisionChecker, and its helper's); one per thread.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "tandem/collision/clearance_cache.hpp"
 #include "tandem/collision/collision_checker.hpp"
 #include "tandem/collision/motion_validation.hpp"
+#include "tandem/collision/query_helper.hpp"
 #include "tandem/core/stopwatch.hpp"
 #include "tandem/space/se3_space.hpp"
 
@@ -69,6 +79,12 @@ class MotionValidator {
 
   /// Sets the way motions are checked (a planner sets its own settings' way when constructed).
   void configure(const ValidationSettings& settings);
+  /// From now on, exact checks of motions ask in rounds (without a clearance margin; the header
+  /// says how) shared with a thread of its own, which queries a clone of the checker.
+  void use_helper_thread();
+  /// Ends the helper thread, and the rounds: checks ask one query at a time again.
+  void release_helper_thread() { helper_.reset(); }
+  bool has_helper_thread() const { return helper_ != nullptr; }
   MotionValidation mode() const { return mode_; }
   /// The contact tolerance in scene units (exact mode).
   double tolerance() const { return tolerance_; }
@@ -131,6 +147,15 @@ class MotionValidator {
   /// in bisection order) collides: yes/no queries; false says nothing of the rest of the motion.
   bool collides_coarsely(const Config& a, const Config& b);
   bool check_motion_exact(const Config& a, const Config& b);
+  /// check_motion_exact's steps in rounds shared with the helper thread.
+  bool check_motion_in_rounds(const Config& a, const Config& b);
+  /// The caps clearance(q, cap) asks of the checker: {cap, FCL's cap}.
+  std::pair<double, double> clearance_caps(double cap) const;
+  /// A round's clearance query of q, capped as clearance(q, cap) caps it.
+  RoundQuery clearance_query(const Config& q, double cap) const;
+  /// Answers round_ into answers_: clearances from the cache where it knows them, the rest (each
+  /// counted in checks(), the clearances then cached in the round's order) on both threads.
+  void answer_round();
   MotionCheck last_valid_discrete(const Config& a, const Config& b);
   MotionCheck last_valid_exact(const Config& a, const Config& b);
 
@@ -146,6 +171,14 @@ class MotionValidator {
   std::vector<std::pair<unsigned, unsigned>> queue_;
   std::vector<std::pair<double, double>> stretches_;
   ClearanceCache cache_;
+  std::unique_ptr<QueryHelper> helper_;
+  // Reused by check_motion_in_rounds: the round, its answers, and the queries the cache did not
+  // answer (with their indices in the round) and their replies.
+  std::vector<RoundQuery> round_;
+  std::vector<double> answers_;
+  std::vector<RoundQuery> asked_;
+  std::vector<std::size_t> asked_index_;
+  std::vector<double> replies_;
 };
 
 }  // namespace tandem

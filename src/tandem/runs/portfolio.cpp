@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -78,10 +79,12 @@ class Race {
 /// One search of the portfolio, with everything it owns.
 struct Member {
   Member(const Problem& problem, const RunSpec& spec, const CollisionChecker& shared,
-         unsigned index, const std::shared_ptr<const WorkspaceRoute>& route)
+         unsigned index, const std::shared_ptr<const WorkspaceRoute>& route, bool helped)
       : name(member_planner(spec.mode, index, route_leads(spec, route.get()))),
         checker(shared.clone()),
         validator(problem.space, checker) {
+    if (helped)
+      validator.use_helper_thread();
     PlannerSettings settings = spec.settings;
     settings.seed = member_seed(spec.settings.seed, index);
     planner = make_planner(name, {.validator = validator,
@@ -99,13 +102,19 @@ struct Member {
 };
 
 /// Runs a member in chunks until it solves, stops for its own reasons (time limit, interrupt,
-/// iteration limit, invalid start or goal), or can no longer win.
-void run_member(Member& m, unsigned index, const RunSpec& spec, Race& race) {
+/// iteration limit, invalid start or goal), or can no longer win. A helped member releases its
+/// helper thread once its work reaches spec.helper_work, then calls `released`.
+void run_member(Member& m, unsigned index, const RunSpec& spec, Race& race,
+                const std::function<void()>& released) {
   Termination termination;
   termination.time_limit_s = spec.time_limit;
   termination.stop = spec.stop;
   for (;;) {
     const PlannerStats& stats = m.planner->stats();
+    if (m.validator.has_helper_thread() && stats.work >= spec.helper_work) {
+      m.validator.release_helper_thread();
+      released();
+    }
     if (stats.iterations >= spec.max_iterations || !race.may_win(stats.work, index)) {
       m.status = PlannerStatus::iteration_limit;
       return;
@@ -164,16 +173,20 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   const Stopwatch wall;
   // Once for every member that follows it (each finding its own cost a route per member).
   const std::shared_ptr<const WorkspaceRoute> route = run_route(problem, spec, checker);
+  // Where the route leads, member 0 starts with a helper thread, and member 1 starts when member 0
+  // releases it.
+  const bool helped = route_leads(spec, route.get());
   std::vector<std::unique_ptr<Member>> members;
   for (unsigned i = 0; i < threads; ++i)
-    members.push_back(std::make_unique<Member>(problem, spec, checker, i, route));
+    members.push_back(std::make_unique<Member>(problem, spec, checker, i, route, helped && i == 0));
 
   Race race;
   std::mutex error_mutex;
   std::exception_ptr error;
-  const auto run = [&](unsigned i) {
+  std::vector<std::thread> pool;
+  const auto run = [&](unsigned i, const std::function<void()>& released) {
     try {
-      run_member(*members[i], i, spec, race);
+      run_member(*members[i], i, spec, race, released);
     } catch (...) {
       const std::lock_guard lock(error_mutex);
       if (!error)
@@ -186,10 +199,9 @@ RunOutcome run_portfolio(const Problem& problem, const RunSpec& spec, CollisionC
   // on the other core: Linux skips pulling work onto a core that was busy until just now
   // (sched_migration_cost), so on 2 cores the second member started up to 4 ms late (measured in
   // tandem-vs-ompl, whose OMPL runs are single-threaded).
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i)
-    pool.emplace_back(run, i);
-  run(0);
+  for (unsigned i = helped ? 2 : 1; i < threads; ++i)
+    pool.emplace_back(run, i, std::function<void()>());
+  run(0, [&] { pool.emplace_back(run, 1u, std::function<void()>()); });
   for (auto& t : pool)
     t.join();
   if (error)
