@@ -53,11 +53,21 @@ void QueryHelper::run(std::span<const RoundQuery> round, std::span<double> answe
   answers_ = answers;
   next_.store(0, std::memory_order_relaxed);
   helper_done_.store(false, std::memory_order_relaxed);
+  round_state_.store(Round::posted, std::memory_order_release);
   epoch_.fetch_add(1, std::memory_order_release);
   epoch_.notify_one();
   take_queries(own);
-  while (!helper_done_.load(std::memory_order_acquire))
-    pause();
+  // Closed before the helper joined: nothing of it to wait for. Joined: wait for the query it is
+  // answering, yielding the core if that takes long (the helper may have been preempted).
+  Round posted = Round::posted;
+  if (round_state_.compare_exchange_strong(posted, Round::closed, std::memory_order_acq_rel))
+    return;
+  for (unsigned spins = 0; !helper_done_.load(std::memory_order_acquire); ++spins) {
+    if (spins < kSpins)
+      pause();
+    else
+      std::this_thread::yield();
+  }
   own.add_counters(checker_.counters());
   checker_.reset_counters();
   if (error_)
@@ -70,6 +80,9 @@ void QueryHelper::serve() {
     seen = next_round(seen);
     if (stop_.load(std::memory_order_relaxed))
       return;
+    Round posted = Round::posted;
+    if (!round_state_.compare_exchange_strong(posted, Round::joined, std::memory_order_acq_rel))
+      continue;  // closed without it
     try {
       take_queries(checker_);
     } catch (...) {

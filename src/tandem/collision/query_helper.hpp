@@ -11,7 +11,9 @@
 //
 // Threading: run() is called from one thread at a time (the validator's). The helper thread reads
 // the round and writes its answers only between run()'s start and its return; it waits for the
-// next round spinning for a while, then asleep (std::atomic::wait).
+// next round spinning for a while, then asleep (std::atomic::wait). The validator's thread never
+// waits for a helper that has not joined the round (not yet scheduled, or asleep): when it has
+// taken the last query it closes the round, and waits only for a query the helper is answering.
 
 #include <atomic>
 #include <cstdint>
@@ -59,9 +61,14 @@ class QueryHelper {
   CollisionChecker checker_;
   std::span<const RoundQuery> round_;
   std::span<double> answers_;
+  /// The current round: posted (the helper may join it), joined by the helper, or closed (the
+  /// validator's thread took every query alone, the helper may no longer join).
+  enum class Round : std::uint8_t { posted, joined, closed };
+
   std::atomic<std::size_t> next_{0};     ///< the round's next query to take
   std::atomic<std::uint32_t> epoch_{0};  ///< one more for each round (and to stop)
-  std::atomic<bool> helper_done_{true};  ///< the helper has left the current round
+  std::atomic<Round> round_state_{Round::closed};
+  std::atomic<bool> helper_done_{true};  ///< the helper has left the round it joined
   std::atomic<bool> stop_{false};
   std::exception_ptr error_;  ///< thrown on the helper's thread in this round
   std::thread thread_;

@@ -131,7 +131,8 @@ ParamTable<S> make_table() {
        .max = 256.0,
        .help = "Independent searches run at once, each on its own thread, seeded from the run's "
                "seed; the one that solves with the least work (its collision queries' tests) wins "
-               "(0: one per core)",
+               "(0: one per core). Where the part fits the workspace route, the first search "
+               "checks its motions on two threads, and the second starts after 80 ms of its work",
        .group = "portfolio"},
       &S::threads));
   return t;
