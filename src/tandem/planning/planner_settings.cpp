@@ -129,10 +129,9 @@ ParamTable<S> make_table() {
        .label = "threads",
        .min = 0.0,
        .max = 256.0,
-       .help = "Independent searches run at once, each on its own thread, seeded from the run's "
-               "seed; the one that solves with the least work (its collision queries' tests) wins "
-               "(0: one per core). Where the part fits the workspace route, the first search "
-               "checks its motions on two threads, and the second starts after 80 ms of its work",
+       .help = "Searches at once, each on a thread, seeded from the run's seed; the one solving "
+               "with the least work (its queries' tests) wins (0: one per core). Where the part "
+               "fits the route, the first search has two threads for its first 80 ms of work",
        .group = "portfolio"},
       &S::threads));
   return t;
