@@ -30,29 +30,45 @@ std::vector<std::vector<RoundQuery>> random_rounds(const Problem& p, int count) 
   return rounds;
 }
 
-TEST(QueryHelper, ARoundOnTwoThreadsAnswersAndCountsAsOneThreadAlone) {
-  const Problem p = test::detour_problem();
-  const std::vector<std::vector<RoundQuery>> rounds = random_rounds(p, 400);
-  CollisionChecker reference(p.scene);
+/// Runs `round` through the helper (with `own` on this thread) and expects every answer to be
+/// the reference checker's, asked one query at a time; returns how many said free.
+int expect_answers_as_alone(QueryHelper& helper, const std::vector<RoundQuery>& round,
+                            CollisionChecker& own, CollisionChecker& reference) {
+  std::vector<double> answers(round.size(), -1.0);
+  helper.run(round, answers, own);
+  int free = 0;
+  for (std::size_t i = 0; i < round.size(); ++i) {
+    const RoundQuery& q = round[i];
+    const double expected = q.yes_no ? (reference.is_collision_free(q.q) ? 1.0 : 0.0)
+                                     : reference.clearance_bound(q.q, q.cap, q.fcl_cap);
+    EXPECT_EQ(answers[i], expected);
+    free += expected > 0.0 ? 1 : 0;
+  }
+  return free;
+}
+
+/// The rounds, a checker for the thread that asks for them, its helper, and a reference checker.
+struct RoundsFixture {
+  explicit RoundsFixture(int count) : rounds(random_rounds(problem, count)) {}
+  Problem problem = test::detour_problem();
+  std::vector<std::vector<RoundQuery>> rounds;
+  CollisionChecker reference{problem.scene};
   CollisionChecker own = reference.clone();
-  QueryHelper helper(reference.clone());
-  int free = 0, colliding = 0;
-  for (const std::vector<RoundQuery>& round : rounds) {
-    std::vector<double> answers(round.size(), -1.0);
-    helper.run(round, answers, own);
-    for (std::size_t i = 0; i < round.size(); ++i) {
-      const RoundQuery& q = round[i];
-      const double expected = q.yes_no ? (reference.is_collision_free(q.q) ? 1.0 : 0.0)
-                                       : reference.clearance_bound(q.q, q.cap, q.fcl_cap);
-      EXPECT_EQ(answers[i], expected);
-      (expected > 0.0 ? free : colliding) += 1;
-    }
+  QueryHelper helper{reference.clone()};
+};
+
+TEST(QueryHelper, ARoundOnTwoThreadsAnswersAndCountsAsOneThreadAlone) {
+  RoundsFixture f(400);
+  int free = 0, asked = 0;
+  for (const std::vector<RoundQuery>& round : f.rounds) {
+    free += expect_answers_as_alone(f.helper, round, f.own, f.reference);
+    asked += static_cast<int>(round.size());
   }
   EXPECT_GT(free, 100);
-  EXPECT_GT(colliding, 100);
+  EXPECT_GT(asked - free, 100);
   // Every query counted once, in the checker of the thread that asked for the round.
-  const CollisionCounters& a = own.counters();
-  const CollisionCounters& b = reference.counters();
+  const CollisionCounters& a = f.own.counters();
+  const CollisionCounters& b = f.reference.counters();
   EXPECT_EQ(a.state_checks, b.state_checks);
   EXPECT_EQ(a.clearance_queries, b.clearance_queries);
   EXPECT_EQ(a.box_tests, b.box_tests);
@@ -61,23 +77,12 @@ TEST(QueryHelper, ARoundOnTwoThreadsAnswersAndCountsAsOneThreadAlone) {
 }
 
 TEST(QueryHelper, TheHelpersCheckerCanBeReplacedBetweenRounds) {
-  const Problem p = test::detour_problem();
-  const std::vector<std::vector<RoundQuery>> rounds = random_rounds(p, 40);
-  CollisionChecker own(p.scene);
-  CollisionChecker reference = own.clone();
-  QueryHelper helper(own.clone());
-  for (const std::vector<RoundQuery>& round : rounds) {
-    helper.set_checker(own.clone());
-    std::vector<double> answers(round.size());
-    helper.run(round, answers, own);
-    for (std::size_t i = 0; i < round.size(); ++i) {
-      if (!round[i].yes_no) {
-        EXPECT_EQ(answers[i],
-                  reference.clearance_bound(round[i].q, round[i].cap, round[i].fcl_cap));
-      }
-    }
+  RoundsFixture f(40);
+  for (const std::vector<RoundQuery>& round : f.rounds) {
+    f.helper.set_checker(f.own.clone());
+    expect_answers_as_alone(f.helper, round, f.own, f.reference);
   }
-  EXPECT_GT(own.counters().clearance_queries, 100u);
+  EXPECT_GT(f.own.counters().clearance_queries, 100u);
 }
 
 }  // namespace
