@@ -90,7 +90,10 @@ double MotionValidator::clearance(const Config& q, double cap) {
   // is asked for the whole of it.
   if (margin_ > 0.0)
     return clearance_beyond_margin(q, cap);
-  const auto [full, fcl_cap] = clearance_caps(cap);
+  // Named, not a structured binding: clang 14 (the fuzz build) refuses to capture one below.
+  const std::pair<double, double> caps = clearance_caps(cap);
+  const double full = caps.first;
+  const double fcl_cap = caps.second;
   // A tree node's bound, known since it was added, serves every motion from it.
   if (const std::optional<double> known = cache_.find(q, fcl_cap))
     return std::min(*known, full);

@@ -56,7 +56,21 @@ void QueryHelper::run(std::span<const RoundQuery> round, std::span<double> answe
   round_state_.store(Round::posted, std::memory_order_release);
   epoch_.fetch_add(1, std::memory_order_release);
   epoch_.notify_one();
-  take_queries(own);
+  std::exception_ptr own_error;
+  try {
+    take_queries(own);
+  } catch (...) {
+    // The helper may still be reading the round: it ends first.
+    own_error = std::current_exception();
+  }
+  end_round(own);
+  if (own_error)
+    std::rethrow_exception(own_error);
+  if (error_)
+    std::rethrow_exception(std::exchange(error_, nullptr));
+}
+
+void QueryHelper::end_round(CollisionChecker& own) {
   // Closed before the helper joined: nothing of it to wait for. Joined: wait for the query it is
   // answering, yielding the core if that takes long (the helper may have been preempted).
   Round posted = Round::posted;
@@ -70,8 +84,6 @@ void QueryHelper::run(std::span<const RoundQuery> round, std::span<double> answe
   }
   own.add_counters(checker_.counters());
   checker_.reset_counters();
-  if (error_)
-    std::rethrow_exception(std::exchange(error_, nullptr));
 }
 
 void QueryHelper::serve() {

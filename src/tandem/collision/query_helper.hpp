@@ -55,6 +55,9 @@ class QueryHelper {
   void serve();
   /// Waits until epoch_ differs from `seen` and returns it.
   std::uint32_t next_round(std::uint32_t seen) const;
+  /// Closes the round if the helper has not joined it, else waits until the helper has left it
+  /// and adds its counters to own's.
+  void end_round(CollisionChecker& own);
   /// Takes the round's unanswered queries one by one until none is left.
   void take_queries(CollisionChecker& checker);
 
