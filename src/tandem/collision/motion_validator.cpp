@@ -32,6 +32,29 @@ double needed_clearance(double rate, double half_width) {
   return 1.01 * rate * half_width / kStretchShare;
 }
 
+/// Calls visit(k) for the coarse states k of n steps other than the end, in bisection order
+/// (n / 2, n / 4, 3n / 4, ...), until it returns true; whether it did.
+template <class Visit>
+bool any_coarse_step(unsigned n, Visit visit) {
+  for (unsigned stride = n; stride > 1; stride /= 2) {
+    for (unsigned k = stride / 2; k < n; k += stride) {
+      if (visit(k))
+        return true;
+    }
+  }
+  return false;
+}
+
+/// Queues what is left of the stretch [s0, s1] on either side of mid once [mid - reach, mid +
+/// reach] is certified.
+void queue_rest(std::vector<std::pair<double, double>>& stretches, double s0, double s1, double mid,
+                double reach) {
+  if (mid - reach >= s0)
+    stretches.emplace_back(s0, mid - reach);
+  if (mid + reach <= s1)
+    stretches.emplace_back(mid + reach, s1);
+}
+
 }  // namespace
 
 MotionValidator::MotionValidator(const SE3Space& space, CollisionChecker& checker,
@@ -200,13 +223,7 @@ bool MotionValidator::collides_coarsely(const Config& a, const Config& b) {
   // The end first, then the others in bisection order (n / 2, n / 4, 3n / 4, ...).
   if (!collision_free(b))
     return true;
-  for (unsigned stride = n; stride > 1; stride /= 2) {
-    for (unsigned k = stride / 2; k < n; k += stride) {
-      if (!collision_free(space_.step(a, b, k, n)))
-        return true;
-    }
-  }
-  return false;
+  return any_coarse_step(n, [&](unsigned k) { return !collision_free(space_.step(a, b, k, n)); });
 }
 
 bool MotionValidator::check_motion_exact(const Config& a, const Config& b) {
@@ -248,11 +265,7 @@ bool MotionValidator::check_motion_exact(const Config& a, const Config& b) {
     const double c = clearance(q, needed_clearance(rate, 0.5 * (s1 - s0)));
     if (c < tolerance_)
       return false;
-    const double reach = c / rate * kStretchShare;
-    if (mid - reach >= s0)
-      stretches_.emplace_back(s0, mid - reach);
-    if (mid + reach <= s1)
-      stretches_.emplace_back(mid + reach, s1);
+    queue_rest(stretches_, s0, s1, mid, c / rate * kStretchShare);
   }
   return true;
 }
@@ -268,10 +281,10 @@ bool MotionValidator::check_motion_in_rounds(const Config& a, const Config& b) {
     return false;
   const unsigned n = std::min(kCoarseStates, space_.segment_count(a, b));
   round_.clear();
-  for (unsigned stride = n; stride > 1; stride /= 2) {
-    for (unsigned k = stride / 2; k < n; k += stride)
-      round_.push_back({.q = space_.step(a, b, k, n), .yes_no = true});
-  }
+  any_coarse_step(n, [&](unsigned k) {
+    round_.push_back({.q = space_.step(a, b, k, n), .yes_no = true});
+    return false;
+  });
   answer_round();
   if (std::ranges::find(answers_, 0.0) != answers_.end())
     return false;
@@ -318,11 +331,7 @@ bool MotionValidator::check_motion_in_rounds(const Config& a, const Config& b) {
     for (std::size_t i = head; i < end; ++i) {
       const auto [s0, s1] = stretches_[i];
       const double mid = 0.5 * (s0 + s1);
-      const double reach = answers_[i - head] / rate * kStretchShare;
-      if (mid - reach >= s0)
-        stretches_.emplace_back(s0, mid - reach);
-      if (mid + reach <= s1)
-        stretches_.emplace_back(mid + reach, s1);
+      queue_rest(stretches_, s0, s1, mid, answers_[i - head] / rate * kStretchShare);
     }
     head = end;
   }
